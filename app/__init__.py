@@ -1,0 +1,1 @@
+"""The springscene command-line app (thin: argument parsing, progress, exit codes)."""

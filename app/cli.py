@@ -1,0 +1,99 @@
+"""springscene's command line: parse arguments, show progress, map errors to exit codes.
+
+Bad input (a missing file, a bad key or flag) is one line on stderr and exit 2.
+Everything a command does is a call into the ``springscene`` library.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+
+from springscene import config
+from springscene.backend import BACKENDS
+from springscene.errors import UserError
+
+EXIT_BAD_INPUT = 2
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that reports a usage error on one line."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")
+
+
+def _build_parser() -> argparse.ArgumentParser:
+    p = _Parser(prog="springscene", description="Headless ball-and-spring scenes like VPython's.")
+    sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+
+    def renders(sp: argparse.ArgumentParser) -> None:
+        sp.add_argument("--backend", default="auto", choices=BACKENDS,
+                        help="off-screen OpenGL: EGL, OSMesa, or auto (EGL if present)")
+        sp.add_argument("--draft", action="store_true", help="no anti-aliasing (faster)")
+
+    s = sub.add_parser("simulate", help="write the ball's trajectory as CSV")
+    s.add_argument("config")
+    s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
+    s.add_argument("--out", required=True, help="trajectory.csv")
+
+    s = sub.add_parser("still", help="render the scene at one time to PNG")
+    s.add_argument("config")
+    s.add_argument("--time", type=float, default=0.0, help="simulated time in s (nearest step)")
+    s.add_argument("--out", required=True, help="frame.png")
+    renders(s)
+
+    s = sub.add_parser("render", help="render the oscillation to MP4 or GIF in real time")
+    s.add_argument("config")
+    s.add_argument("--duration", type=float, help="simulated (= video) seconds")
+    s.add_argument("--fps", type=int, help="frames per second (default: the config's)")
+    s.add_argument("--out", required=True, help="video.mp4 or video.gif")
+    s.add_argument("--quiet", action="store_true", help="no progress bar")
+    renders(s)
+
+    s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
+    s.add_argument("--backend", default="auto", choices=BACKENDS)
+    return p
+
+
+def _run(args: argparse.Namespace) -> int:
+    from springscene import render
+
+    if args.command == "info":
+        from springscene.info import info
+
+        for key, value in info(args.backend).items():
+            print(f"{key}: {value}")
+        return 0
+
+    cfg = config.load(args.config)
+    if args.command == "simulate":
+        out = render.write_csv(render.simulate(cfg, args.duration), args.out)
+        print(f"wrote {out}")
+    elif args.command == "still":
+        render.still(cfg, args.time, args.out, backend=args.backend, antialias=not args.draft)
+        print(f"wrote {args.out}")
+    elif args.command == "render":
+        stats = render.render_video(cfg, args.out, duration=args.duration, fps=args.fps,
+                                    backend=args.backend, antialias=not args.draft,
+                                    progress=not args.quiet and sys.stderr.isatty())
+        if not args.quiet:
+            print(f"wrote {stats.path}: {stats.frames} frames at {stats.fps} fps "
+                  f"in {stats.seconds:.1f} s ({stats.frames_per_second:.1f} frames/s)")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _build_parser().parse_args(argv)
+    try:
+        return _run(args)
+    except UserError as exc:
+        print(f"springscene: error: {exc}", file=sys.stderr)
+        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        print("springscene: interrupted", file=sys.stderr)
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,1 @@
+"""springscene: headless ball-and-spring scenes like VPython's, rendered off-screen."""

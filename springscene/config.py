@@ -1,0 +1,247 @@
+"""Scene configs: TOML files read into checked dataclasses, and the physics system they describe.
+
+Every key is checked: an unknown section or key, a wrong type, a non-finite
+number or a value out of range raises :class:`~springscene.errors.UserError`
+with a one-line message naming the file and the key.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from .colors import Color, parse_color
+from .errors import UserError
+from .physics import System
+
+Vec = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class SceneCfg:
+    title: str = "Ball and Spring Model of Matter"
+    width: int = 900
+    height: int = 600
+    background: Color = (1.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True)
+class CameraCfg:
+    """VPython's canvas camera: ``range`` None means autoscale."""
+
+    center: Vec = (0.0, 0.0, 0.0)
+    forward: Vec = (0.0, 0.0, -1.0)
+    up: Vec = (0.0, 1.0, 0.0)
+    fov: float = math.pi / 3
+    range: float | None = None
+
+
+@dataclass(frozen=True)
+class PhysicsCfg:
+    dt: float = 0.01
+    g: Vec = (0.0, -9.8, 0.0)
+
+
+@dataclass(frozen=True)
+class HolderCfg:
+    pos: Vec = (0.0, 0.0, 0.0)
+    size: Vec = (0.2, 0.01, 0.2)
+    color: Color = (0.5, 0.5, 0.5)
+
+
+@dataclass(frozen=True)
+class SpringCfg:
+    k: float = 15.0
+    L0: float = 0.10
+    radius: float = 0.015
+    thickness: float = 0.003
+    coils: int = 15
+    color: Color = (0.0, 1.0, 1.0)
+
+
+@dataclass(frozen=True)
+class BallCfg:
+    m: float = 0.10
+    radius: float = 0.025
+    pos: Vec = (0.0, -0.18533333333333335, 0.0)
+    p: Vec = (0.0, 0.0, 0.0)
+    color: Color = (1.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True)
+class RenderCfg:
+    fps: int = 50
+    duration: float = 10.0
+
+
+@dataclass(frozen=True)
+class Config:
+    scene: SceneCfg = field(default_factory=SceneCfg)
+    camera: CameraCfg = field(default_factory=CameraCfg)
+    physics: PhysicsCfg = field(default_factory=PhysicsCfg)
+    holder: HolderCfg = field(default_factory=HolderCfg)
+    spring: SpringCfg = field(default_factory=SpringCfg)
+    ball: BallCfg = field(default_factory=BallCfg)
+    render: RenderCfg = field(default_factory=RenderCfg)
+    source: str = "<defaults>"
+
+    def system(self) -> System:
+        """The physics system: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball."""
+        return System(
+            pos=[self.holder.pos, self.ball.pos],
+            p=[(0.0, 0.0, 0.0), self.ball.p],
+            m=[1.0, self.ball.m],
+            fixed=[True, False],
+            i=[0], j=[1],
+            k=[self.spring.k], L0=[self.spring.L0],
+            g=self.physics.g, dt=self.physics.dt,
+        )
+
+
+# ---- checking -------------------------------------------------------------------------
+
+def _number(v: Any) -> float:
+    if isinstance(v, bool) or not isinstance(v, (int, float)):
+        raise ValueError(f"must be a number, got {type(v).__name__}")
+    if not math.isfinite(v):
+        raise ValueError(f"must be finite, got {v}")
+    return float(v)
+
+
+def _positive(v: Any) -> float:
+    x = _number(v)
+    if x <= 0:
+        raise ValueError(f"must be > 0, got {x:g}")
+    return x
+
+
+def _non_negative(v: Any) -> float:
+    x = _number(v)
+    if x < 0:
+        raise ValueError(f"must be >= 0, got {x:g}")
+    return x
+
+
+def _positive_int(v: Any) -> int:
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise ValueError(f"must be a whole number, got {type(v).__name__}")
+    if v <= 0:
+        raise ValueError(f"must be > 0, got {v}")
+    return v
+
+
+def _vec(v: Any) -> Vec:
+    if not isinstance(v, list) or len(v) != 3:
+        raise ValueError("must be a list of three numbers [x, y, z]")
+    x, y, z = (_number(c) for c in v)
+    return (x, y, z)
+
+
+def _positive_vec(v: Any) -> Vec:
+    x, y, z = _vec(v)
+    if min(x, y, z) <= 0:
+        raise ValueError("must have three positive numbers")
+    return (x, y, z)
+
+
+def _nonzero_vec(v: Any) -> Vec:
+    x, y, z = _vec(v)
+    if x == y == z == 0:
+        raise ValueError("must not be the zero vector")
+    return (x, y, z)
+
+
+def _text(v: Any) -> str:
+    if not isinstance(v, str):
+        raise ValueError(f"must be a string, got {type(v).__name__}")
+    return v
+
+
+def _fov(v: Any) -> float:
+    x = _positive(v)
+    if x >= math.pi:
+        raise ValueError(f"must be below pi (radians), got {x:g}")
+    return x
+
+
+# section -> key -> checker; the keys are the dataclasses' fields.
+_CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
+    "scene": {"title": _text, "width": _positive_int, "height": _positive_int,
+              "background": parse_color},
+    "camera": {"center": _vec, "forward": _nonzero_vec, "up": _nonzero_vec, "fov": _fov,
+               "range": _positive},
+    "physics": {"dt": _positive, "g": _vec},
+    "holder": {"pos": _vec, "size": _positive_vec, "color": parse_color},
+    "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _positive,
+               "coils": _positive_int, "color": parse_color},
+    "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
+    "render": {"fps": _positive_int, "duration": _non_negative},
+}
+
+
+def from_dict(data: dict[str, Any], source: str = "<dict>") -> Config:
+    """Check a parsed TOML document and build a :class:`Config`; defaults fill what is absent."""
+    cfg = Config(source=source)
+    for section, table in data.items():
+        if section not in _CHECKS:
+            raise UserError(f"{source}: unknown section [{section}] "
+                            f"(known: {', '.join(_CHECKS)})")
+        if not isinstance(table, dict):
+            raise UserError(f"{source}: [{section}] must be a table")
+        checks = _CHECKS[section]
+        values = {}
+        for key, value in table.items():
+            if key not in checks:
+                raise UserError(f"{source}: unknown key '{key}' in [{section}] "
+                                f"(known: {', '.join(checks)})")
+            try:
+                values[key] = checks[key](value)
+            except ValueError as exc:
+                raise UserError(f"{source}: [{section}] {key} {exc}") from None
+        cfg = replace(cfg, **{section: replace(getattr(cfg, section), **values)})
+    _check_whole(cfg)
+    return cfg
+
+
+def _check_whole(cfg: Config) -> None:
+    """Checks that involve more than one key."""
+    src = cfg.source
+    if np.allclose(cfg.ball.pos, cfg.holder.pos, rtol=0, atol=1e-12):
+        raise UserError(f"{src}: [ball] pos must differ from [holder] pos (the spring has no direction)")
+    c = cfg.camera
+    if abs(float(np.dot(c.forward, c.up))) >= 0.999999 * np.linalg.norm(c.forward) * np.linalg.norm(c.up):
+        raise UserError(f"{src}: [camera] up must not be parallel to [camera] forward")
+
+
+def load(path: str | Path) -> Config:
+    """Read and check a TOML config file."""
+    path = Path(path)
+    try:
+        raw = path.read_bytes()
+    except FileNotFoundError:
+        raise UserError(f"{path}: no such config file") from None
+    except IsADirectoryError:
+        raise UserError(f"{path}: is a directory, not a config file") from None
+    except OSError as exc:
+        raise UserError(f"{path}: cannot read ({exc.strerror})") from None
+    try:
+        data = tomllib.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise UserError(f"{path}: not UTF-8 text") from None
+    except tomllib.TOMLDecodeError as exc:
+        raise UserError(f"{path}: invalid TOML: {exc}") from None
+    return from_dict(data, source=str(path))
+
+
+def override(cfg: Config, section: str, **values: Any) -> Config:
+    """Return ``cfg`` with checked command-line values in ``section`` (None values are skipped)."""
+    values = {k: v for k, v in values.items() if v is not None}
+    if not values:
+        return cfg
+    return replace(cfg, **{section: replace(getattr(cfg, section), **values)})
+

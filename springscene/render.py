@@ -1,0 +1,118 @@
+"""The jobs a user runs: simulate to CSV, a still at a time, a video in real time.
+
+Each is a plain function a notebook can call; the command-line app only parses
+arguments and maps errors to exit codes.
+"""
+
+from __future__ import annotations
+
+import csv
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import physics
+from .config import Config
+from .errors import UserError
+from .outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, write_png
+
+CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E")
+
+
+def step_at(time_s: float, dt: float) -> int:
+    """Index of the step nearest ``time_s``."""
+    if not np.isfinite(time_s) or time_s < 0:
+        raise UserError(f"--time must be a finite number >= 0, got {time_s:g}")
+    return int(round(time_s / dt))
+
+
+def frame_steps(duration: float, fps: int, dt: float) -> np.ndarray:
+    """Step index of each video frame: frame f shows the step nearest t = f/fps (real time)."""
+    n = int(round(duration * fps))
+    return np.rint(np.arange(n) / (fps * dt)).astype(np.int64)
+
+
+# ---- simulate ---------------------------------------------------------------------------
+
+def simulate(cfg: Config, duration: float | None = None) -> physics.Trajectory:
+    """The ball's trajectory from t = 0 to ``duration`` (default: the config's), one row per step."""
+    duration = cfg.render.duration if duration is None else duration
+    _check_duration(duration)
+    return physics.run(cfg.system(), int(round(duration / cfg.physics.dt)))
+
+
+def write_csv(traj: physics.Trajectory, out: str | Path) -> Path:
+    """Write ``t,x,y,z,px,py,pz,K,Us,Ug,E`` rows, full float precision."""
+    out = check_output(out, (".csv",))
+    table = np.column_stack([traj.t, traj.pos, traj.p, traj.K, traj.Us, traj.Ug, traj.E])
+    with atomic_path(out) as tmp, open(tmp, "w", newline="") as fh:
+        w = csv.writer(fh)
+        w.writerow(CSV_HEADER)
+        w.writerows(table.tolist())
+    return out
+
+
+# ---- still and video --------------------------------------------------------------------
+
+def still(cfg: Config, time_s: float, out: str | Path | None = None, *,
+          backend: str = "auto", antialias: bool = True) -> np.ndarray:
+    """The scene at the step nearest ``time_s`` as an (h, w, 3) image; written as PNG to ``out``."""
+    path = check_output(out, (".png",)) if out is not None else None
+    n = step_at(time_s, cfg.physics.dt)
+    system = physics.step(cfg.system(), n)
+    from .scene import Scene
+
+    with Scene(cfg, system, antialias=antialias, backend_name=backend) as scene:
+        image = scene.frame()
+    if path is not None:
+        write_png(path, image)
+    return image
+
+
+@dataclass
+class RenderStats:
+    path: Path
+    frames: int
+    fps: int
+    seconds: float      # wall time
+
+    @property
+    def frames_per_second(self) -> float:
+        return self.frames / self.seconds if self.seconds else float("inf")
+
+
+def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
+                 fps: int | None = None, backend: str = "auto", antialias: bool = True,
+                 progress: bool = False) -> RenderStats:
+    """Render the oscillation in real time (one video second per simulated second) to MP4 or GIF."""
+    path = check_output(out, VIDEO_FORMATS)
+    duration = cfg.render.duration if duration is None else duration
+    fps = cfg.render.fps if fps is None else fps
+    _check_duration(duration)
+    if fps <= 0:
+        raise UserError(f"--fps must be > 0, got {fps}")
+    steps = frame_steps(duration, fps, cfg.physics.dt)
+    if len(steps) == 0:
+        raise UserError(f"--duration {duration:g} at --fps {fps} gives no frame")
+    from tqdm import tqdm
+
+    from .scene import Scene
+
+    system = cfg.system()
+    start = time.perf_counter()
+    with Scene(cfg, system, antialias=antialias, backend_name=backend) as scene, \
+            atomic_path(path) as tmp, \
+            VideoWriter(tmp, fps, (cfg.scene.width, cfg.scene.height)) as writer:
+        for target in tqdm(steps, desc=path.name, unit="frame", disable=not progress,
+                           leave=False):
+            physics.step(system, int(target) - system.steps)
+            scene.update(system)
+            writer.write(scene.frame())
+    return RenderStats(path, len(steps), fps, time.perf_counter() - start)
+
+
+def _check_duration(duration: float) -> None:
+    if not np.isfinite(duration) or duration < 0:
+        raise UserError(f"--duration must be a finite number >= 0, got {duration:g}")

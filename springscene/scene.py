@@ -1,0 +1,185 @@
+"""The 3D scene, drawn as VPython draws it: holder boxes, helix springs and ball spheres.
+
+A :class:`Scene` is built once from a config and mirrors a physics
+:class:`~springscene.physics.System`: each fixed node is a holder box, each free
+node a ball, each spring a helix from its start node to its end node. Each frame,
+:meth:`Scene.update` moves the balls' actors and rewrites the springs' points in
+place; no mesh is rebuilt and no actor is added. The scene only reads the state.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from . import backend, camera
+from .config import Config
+from .geometry import HelixFrame, HelixTube
+from .physics import System
+
+# VPython's lights: fixed in the world, (direction towards the light, colour).
+LIGHTS = (((0.22, 0.44, 0.88), 0.8), ((-0.88, -0.22, -0.44), 0.3))
+AMBIENT = 0.2
+SPECULAR = 0.8
+SHININESS = 0.6          # VPython's default; specular exponent 100 * shininess
+SPHERE_SLICES = 30
+MULTI_SAMPLES = 4        # MSAA when anti-aliased
+
+
+def _material(actor, color) -> None:
+    """VPython's shading: ambient*C + sum lc*max(N.L,0)*C + 0.8*lc*max(R.V,0)^60."""
+    prop = actor.GetProperty()
+    prop.SetColor(*color)
+    prop.SetAmbient(AMBIENT)
+    prop.SetDiffuse(1.0)
+    prop.SetSpecular(SPECULAR)
+    prop.SetSpecularColor(1.0, 1.0, 1.0)
+    prop.SetSpecularPower(100 * SHININESS)
+
+
+class Scene:
+    """An off-screen scene for a config, following a :class:`System` frame by frame.
+
+    Parameters
+    ----------
+    cfg : Config
+        Scene, camera and object settings.
+    system : System
+        The state the scene starts from (node 0 the holder, node 1 the ball).
+    antialias : bool
+        4x multisampling when True; off for draft renders.
+    backend_name : str
+        "auto", "egl" or "osmesa".
+    """
+
+    def __init__(self, cfg: Config, system: System, antialias: bool = True,
+                 backend_name: str = "auto") -> None:
+        backend.select(backend_name)
+        import pyvista as pv     # after the backend is chosen
+
+        self.cfg = cfg
+        w, h = cfg.scene.width, cfg.scene.height
+        pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
+        pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
+        pl.set_background(cfg.scene.background)
+        for direction, intensity in LIGHTS:
+            light = pv.Light(position=direction, focal_point=(0, 0, 0),
+                             color=(intensity,) * 3, light_type="scene light")
+            light.positional = False
+            pl.add_light(light)
+        self.plotter = pl
+
+        # holders: boxes centred on the fixed nodes
+        self._holder_bounds = []
+        for node in np.flatnonzero(system.fixed):
+            c = system.pos[node]
+            half = np.asarray(cfg.holder.size) / 2
+            box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
+            _material(pl.add_mesh(box, smooth_shading=False), cfg.holder.color)
+            self._holder_bounds.append(np.stack([c - half, c + half]))
+
+        # balls: one sphere mesh, moved by its actor's position
+        self._balls = []
+        r = cfg.ball.radius
+        for node in system.free:
+            sphere = pv.Sphere(radius=r, center=(0, 0, 0), theta_resolution=SPHERE_SLICES,
+                               phi_resolution=SPHERE_SLICES)
+            actor = pl.add_mesh(sphere, smooth_shading=True)
+            _material(actor, cfg.ball.color)
+            self._balls.append((int(node), actor))
+
+        # springs: tube meshes whose points are rewritten in place
+        self._springs = []
+        sc = cfg.spring
+        for i, j in zip(system.i, system.j):
+            tube = HelixTube(sc.radius, sc.thickness, sc.coils)
+            frame = HelixFrame()
+            pts, normals = tube.points(system.pos[i], system.pos[j] - system.pos[i],
+                                       frame.set_axis(system.pos[j] - system.pos[i]))
+            mesh = pv.PolyData(pts, tube.faces())
+            mesh.point_data["Normals"] = normals
+            mesh.GetPointData().SetActiveNormals("Normals")
+            actor = pl.add_mesh(mesh, smooth_shading=False, show_scalar_bar=False)
+            actor.GetMapper().ScalarVisibilityOff()
+            _material(actor, sc.color)
+            self._springs.append((int(i), int(j), tube, frame, mesh))
+
+        if cfg.scene.title.strip():
+            pl.add_text(cfg.scene.title.strip(), position="upper_edge", color="black",
+                        font_size=12, name="title")
+        self._autoscale = camera.Autoscaler()
+        self.view: camera.View | None = None
+        self._range: float | None = None
+        self.update(system)
+        self._pixels = None
+
+    # -- per frame ---------------------------------------------------------------------
+
+    def update(self, system: System) -> None:
+        """Move balls and redraw springs along ``pos[j] - pos[i]`` (``spring.axis = ball.pos - holder.pos``)."""
+        for node, actor in self._balls:
+            actor.SetPosition(*system.pos[node])
+        for i, j, tube, frame, mesh in self._springs:
+            axis = system.pos[j] - system.pos[i]
+            pts, normals = tube.points(system.pos[i], axis, frame.set_axis(axis))
+            mesh.points[:] = pts
+            mesh.point_data["Normals"][:] = normals
+            mesh.GetPoints().Modified()
+            mesh.GetPointData().GetNormals().Modified()
+        self._place_camera(system)
+
+    def object_bounds(self, system: System) -> np.ndarray:
+        """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
+        r = self.cfg.ball.radius
+        b = list(self._holder_bounds)
+        b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]
+        for *_, mesh in self._springs:
+            x0, x1, y0, y1, z0, z1 = mesh.bounds
+            b.append(np.array([[x0, y0, z0], [x1, y1, z1]]))
+        return np.array(b)
+
+    def _place_camera(self, system: System) -> None:
+        c = self.cfg.camera
+        w, h = self.cfg.scene.width, self.cfg.scene.height
+        rng = c.range
+        if rng is None:
+            rng = self._autoscale.update(self.object_bounds(system), c.center, c.fov, w, h)
+        if self.view is not None and rng == self._range:
+            return
+        v = camera.view(c.center, c.forward, c.up, c.fov, rng, w, h)
+        cam = self.plotter.renderer.GetActiveCamera()
+        cam.SetPosition(*v.position)
+        cam.SetFocalPoint(*v.focal_point)
+        cam.SetViewUp(*v.up)
+        cam.SetViewAngle(math.degrees(v.fov))
+        cam.SetClippingRange(v.near, v.far)
+        self.plotter.camera_set = True
+        self.view, self._range = v, rng
+
+    def frame(self) -> np.ndarray:
+        """Render and read back the frame as an (height, width, 3) uint8 array, top row first."""
+        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+
+        rw = self.plotter.ren_win
+        if self._pixels is None:
+            self._pixels = vtkUnsignedCharArray()
+        w, h = self.cfg.scene.width, self.cfg.scene.height
+        rw.Render()
+        rw.GetPixelData(0, 0, w - 1, h - 1, 0, self._pixels, 0)
+        img = vtk_to_numpy(self._pixels).reshape(h, w, 3)
+        return np.ascontiguousarray(img[::-1])
+
+    @property
+    def render_window(self):
+        return self.plotter.ren_win
+
+    def close(self) -> None:
+        self.plotter.close()
+
+    def __enter__(self) -> "Scene":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
