@@ -37,7 +37,11 @@ def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out"
 @contextlib.contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
     """Yield a temporary path beside ``path`` (same suffix); rename it to ``path`` on success."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix, dir=path.parent or ".")
+    try:
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix,
+                                   dir=path.parent or ".")
+    except OSError as exc:
+        raise UserError(f"--out {path}: cannot write there ({exc.strerror})") from None
     os.close(fd)
     tmp = Path(tmp)
     try:
@@ -67,6 +71,7 @@ class VideoWriter:
         self.path, self.fps, self.size = path, fps, size
         self.frames = 0
         self._gif: list = []
+        self._palette = None
         if path.suffix.lower() == ".mp4":
             import imageio_ffmpeg
 
@@ -86,7 +91,10 @@ class VideoWriter:
         else:
             from PIL import Image
 
-            self._gif.append(Image.fromarray(frame).quantize(colors=256))
+            image = Image.fromarray(frame)
+            if self._palette is None:   # one palette for the whole GIF: no colour flicker
+                self._palette = image.quantize(256, method=Image.Quantize.FASTOCTREE)
+            self._gif.append(image.quantize(palette=self._palette, dither=Image.Dither.NONE))
         self.frames += 1
 
     def close(self) -> None:

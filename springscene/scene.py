@@ -172,6 +172,11 @@ class Scene:
         return np.ascontiguousarray(img[::-1])
 
     @property
+    def spring_meshes(self) -> list:
+        """The springs' tube meshes (their points are rewritten each frame)."""
+        return [mesh for *_, mesh in self._springs]
+
+    @property
     def render_window(self):
         return self.plotter.ren_win
 

@@ -1,0 +1,101 @@
+"""Bad input: one line naming the file, key or flag; exit 2; no traceback; no output file."""
+
+from __future__ import annotations
+
+import pytest
+
+from conftest import WIKI, run_cli
+
+GOOD = WIKI.read_text()
+
+
+def variant(tmp_path, old, new):
+    assert old in GOOD
+    p = tmp_path / "bad.toml"
+    p.write_text(GOOD.replace(old, new))
+    return p
+
+
+BAD_CONFIGS = [
+    # (replace this, with this, the message must contain)
+    ("k = 15.0", "k = 15.0\nstiffness = 3", "unknown key 'stiffness' in [spring]"),
+    ("[render]", "[renderer]", "unknown section [renderer]"),
+    ("m = 0.10", 'm = "heavy"', "[ball] m must be a number"),
+    ("m = 0.10", "m = -0.1", "[ball] m must be > 0"),
+    ("k = 15.0", "k = 0", "[spring] k must be > 0"),
+    ("L0 = 0.10", "L0 = -1", "[spring] L0 must be > 0"),
+    ("dt = 0.01", "dt = 0", "[physics] dt must be > 0"),
+    ("dt = 0.01", "dt = nan", "[physics] dt must be finite"),
+    ("g = [0, -9.8, 0]", "g = [0, inf, 0]", "[physics] g must be finite"),
+    ("g = [0, -9.8, 0]", "g = [0, -9.8]", "[physics] g must be a list of three numbers"),
+    ("fps = 50", "fps = 0", "[render] fps must be > 0"),
+    ("fps = 50", "fps = 2.5", "[render] fps must be a whole number"),
+    ("duration = 10.0", "duration = -1.0", "[render] duration must be >= 0"),
+    ('color = "red"', 'color = "octarine"', "[ball] color unknown colour"),
+    ("width = 900", "width = true", "[scene] width must be a whole number"),
+    ("k = 15.0", "k = 15.0 15", "invalid TOML"),
+]
+
+
+@pytest.mark.parametrize("old, new, message", BAD_CONFIGS)
+def test_bad_config(tmp_path, old, new, message):
+    cfg = variant(tmp_path, old, new)
+    out = tmp_path / "t.csv"
+    proc = run_cli("simulate", cfg, "--out", out)
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1, proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert str(cfg) in lines[0] and message in lines[0], lines[0]
+    assert not out.exists()
+
+
+@pytest.mark.parametrize("args, message", [
+    (["simulate", "missing.toml", "--out", "{tmp}/t.csv"], "missing.toml: no such config file"),
+    (["still", WIKI, "--time", "-1", "--out", "{tmp}/a.png"], "--time must be a finite number >= 0"),
+    (["still", WIKI, "--time", "nan", "--out", "{tmp}/a.png"], "--time must be a finite number"),
+    (["simulate", WIKI, "--duration", "-2", "--out", "{tmp}/t.csv"], "--duration must be a finite"),
+    (["render", WIKI, "--fps", "0", "--out", "{tmp}/v.mp4"], "--fps must be > 0"),
+    (["render", WIKI, "--out", "{tmp}/v.avi"], "unknown output format '.avi'"),
+    (["still", WIKI, "--out", "{tmp}/a.jpg"], "unknown output format '.jpg'"),
+    (["still", WIKI, "--out", "{tmp}/no/such/dir/a.png"], "does not exist"),
+    (["render", WIKI, "--backend", "vulkan", "--out", "{tmp}/v.mp4"], "--backend"),
+    (["render", WIKI, "--fps", "ten", "--out", "{tmp}/v.mp4"], "--fps"),
+    (["frobnicate"], "invalid choice"),
+])
+def test_bad_flags(tmp_path, args, message):
+    args = [str(a).replace("{tmp}", str(tmp_path)) for a in args]
+    proc = run_cli(*args)
+    assert proc.returncode == 2, proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and message in lines[0], proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_unwritable_output(tmp_path):
+    import os
+
+    if os.geteuid() == 0:   # root may write to a 0555 folder; /proc refuses everyone
+        target = "/proc/springscene-test.csv"
+    else:
+        ro = tmp_path / "ro"
+        ro.mkdir()
+        ro.chmod(0o555)
+        target = ro / "t.csv"
+    proc = run_cli("simulate", WIKI, "--out", target)
+    assert proc.returncode == 2, proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and str(target) in lines[0], proc.stderr
+    assert "Traceback" not in proc.stderr
+
+
+def test_osmesa_missing_is_one_line(monkeypatch):
+    """A backend whose library is absent is refused before VTK can crash."""
+    from springscene import backend
+    from springscene.errors import UserError
+
+    monkeypatch.setattr(backend, "library_present", lambda name: False)
+    monkeypatch.setattr(backend, "_selected", None)
+    with pytest.raises(UserError, match=r"--backend osmesa: libOSMesa.so.8 not found; install Debian's libosmesa6"):
+        backend.select("osmesa")

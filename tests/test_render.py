@@ -1,0 +1,161 @@
+"""Rendered frames: geometry in the picture, image regression on both backends, end-to-end outputs."""
+
+from __future__ import annotations
+
+import csv
+import math
+
+import imageio.v3 as iio
+import numpy as np
+import pytest
+
+from conftest import BASELINES, WIKI, require_backend, run_cli
+from imagecompare import check, compare
+from springscene import config, physics
+
+TIMES = (0.0, 0.13, 0.25, 0.38)   # bottom, middle, top, middle of the first period
+
+
+@pytest.fixture(scope="module")
+def scene(wiki_cfg):
+    from springscene.scene import Scene
+
+    sc = Scene(wiki_cfg, wiki_cfg.system())
+    yield sc
+    sc.close()
+
+
+def ball_centroid(img):
+    """Centre of the red ball's silhouette (bounding box: the highlight and the wire
+    in front of it do not bias it) and its pixel count."""
+    red = (img[..., 0] > 120) & (img[..., 1] < 100) & (img[..., 2] < 100)
+    rows, cols = np.nonzero(red)
+    return (cols.min() + cols.max() + 1) / 2, (rows.min() + rows.max() + 1) / 2, red.sum()
+
+
+@pytest.mark.parametrize("y", [-0.06, -0.185, -0.24], ids=["compressed", "hanging", "stretched"])
+def test_spring_mesh_spans_holder_to_ball_centre(scene, wiki_cfg, y):
+    s = config.override(wiki_cfg, "ball", pos=(0.01, y, 0.0)).system()
+    meshes_before = list(scene.spring_meshes)
+    n_actors = len(scene.plotter.renderer.actors)
+    scene.update(s)
+    mesh = scene.spring_meshes[0]
+    assert scene.spring_meshes == meshes_before and len(scene.plotter.renderer.actors) == n_actors
+    rings = np.asarray(mesh.points).reshape(-1, 16, 3).mean(axis=1)   # centre line
+    axis = s.pos[1] - s.pos[0]
+    u = axis / np.linalg.norm(axis)
+    along = (rings - s.pos[0]) @ u
+    off = np.linalg.norm((rings - s.pos[0]) - along[:, None] * u, axis=1)
+    assert along[0] == pytest.approx(0, abs=1e-12)                    # starts at the holder
+    assert along[-1] == pytest.approx(np.linalg.norm(axis), abs=1e-12)  # ends at the ball centre
+    assert np.allclose(off, wiki_cfg.spring.radius, rtol=0.02)          # coiled around that line
+
+
+def test_ball_pixel_follows_world_position(scene, wiki_cfg):
+    s = wiki_cfg.system()
+    seen = []
+    for t in TIMES:
+        physics.step(s, int(round(t / s.dt)) - s.steps)
+        scene.update(s)
+        col, row, n = ball_centroid(scene.frame())
+        want_col, want_row = scene.view.project(s.pos[1])
+        assert n > 1000
+        assert col == pytest.approx(want_col, abs=1.0)
+        assert row == pytest.approx(want_row, abs=1.5)
+        seen.append(row)
+    assert seen[2] < seen[1] < seen[0]      # it really moves: up from the bottom
+
+
+@pytest.mark.parametrize("backend_name", ["egl", "osmesa"])
+@pytest.mark.parametrize("t", [0.0, 0.25])
+def test_still_matches_baseline(tmp_path, backend_name, t, regen):
+    require_backend(backend_name)
+    out = tmp_path / "still.png"
+    run_cli("still", WIKI, "--time", t, "--backend", backend_name, "--out", out, check=True)
+    img = iio.imread(out)
+    assert img.shape == (600, 900, 3)
+    check(img, BASELINES / f"wiki_t{t:.2f}.png", regen and backend_name == "egl")
+
+
+def test_baseline_tolerance_catches_a_moved_ball():
+    base = iio.imread(BASELINES / "wiki_t0.00.png")
+    moved = np.roll(base, 3, axis=0)
+    bad, _ = compare(moved, base)
+    assert bad > 0.002
+
+
+def test_info_reports_each_backend():
+    for name, cls in (("egl", "vtkEGLRenderWindow"), ("osmesa", "vtkOSOpenGLRenderWindow")):
+        require_backend(name)
+        proc = run_cli("info", "--backend", name, check=True)
+        assert f"render window: {cls}" in proc.stdout
+        assert "GL renderer:" in proc.stdout and "vtk: 9." in proc.stdout
+
+
+def test_simulate_csv(tmp_path, wiki_cfg):
+    out = tmp_path / "traj.csv"
+    run_cli("simulate", WIKI, "--duration", 1.0, "--out", out, check=True)
+    with open(out) as fh:
+        rows = list(csv.reader(fh))
+    assert rows[0] == ["t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E"]
+    data = np.array(rows[1:], dtype=float)
+    assert len(data) == 101 and data[0, 0] == 0 and data[-1, 0] == pytest.approx(1.0)
+    ref = physics.run(wiki_cfg.system(), 100)
+    assert np.array_equal(data[:, 2], ref.pos[:, 1])          # full precision round trip
+    assert np.allclose(data[:, 10], data[:, 7] + data[:, 8] + data[:, 9])
+    m = wiki_cfg.ball.m
+    assert np.allclose(data[:, 7], (data[:, 4:7] ** 2).sum(axis=1) / (2 * m))
+
+
+def test_render_mp4(tmp_path):
+    import imageio_ffmpeg
+
+    out = tmp_path / "v.mp4"
+    run_cli("render", WIKI, "--duration", 1.0, "--draft", "--quiet", "--out", out, check=True)
+    reader = imageio_ffmpeg.read_frames(str(out))
+    meta = reader.__next__()
+    assert meta["size"] == (900, 600) and meta["fps"] == 50
+    frames = [np.frombuffer(f, np.uint8).reshape(600, 900, 3) for f in reader]
+    assert len(frames) == 50
+    # the first frame is t = 0: the ball where the still puts it
+    col, row, _ = ball_centroid(frames[0])
+    still_col, still_row, _ = ball_centroid(iio.imread(BASELINES / "wiki_t0.00.png"))
+    assert (col, row) == pytest.approx((still_col, still_row), abs=1.0)
+    # and frame 12 (t = 0.24 s, near the top) has it higher
+    assert ball_centroid(frames[12])[1] < row - 50
+
+
+def test_render_gif(tmp_path):
+    out = tmp_path / "v.gif"
+    run_cli("render", WIKI, "--duration", 0.5, "--fps", 25, "--draft", "--out", out, check=True)
+    frames = iio.imread(out, index=None)
+    assert frames.shape == (12, 600, 900, 3)        # round(0.5 s * 25 fps)
+    meta = iio.immeta(out, index=0)
+    assert meta["duration"] == 40 and meta.get("loop") == 0
+
+
+def test_interrupted_render_leaves_no_file(tmp_path, wiki_cfg, monkeypatch):
+    from springscene import render
+
+    out = tmp_path / "v.mp4"
+    calls = []
+
+    def boom(*a, **k):
+        calls.append(1)
+        if len(calls) == 5:
+            raise KeyboardInterrupt
+        return physics.step(*a, **k)
+
+    monkeypatch.setattr(render.physics, "step", boom)
+    with pytest.raises(KeyboardInterrupt):
+        render.render_video(wiki_cfg, out, duration=1.0, antialias=False)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_frame_times_are_whole_steps_in_real_time():
+    from springscene.render import frame_steps
+
+    steps = frame_steps(10.0, 50, 0.01)
+    assert len(steps) == 500 and steps[0] == 0 and steps[-1] == 998
+    assert np.all(np.diff(steps) == 2)
+    assert math.isclose(len(steps) / 50, 10.0)
