@@ -91,6 +91,7 @@ class Scene:
 
         # springs: tube meshes whose points are rewritten in place
         self._springs = []
+        self.spring_actors: list = []
         sc = cfg.spring
         for i, j in zip(system.i, system.j):
             tube = HelixTube(sc.radius, sc.thickness, sc.coils)
@@ -104,6 +105,7 @@ class Scene:
             actor.GetMapper().ScalarVisibilityOff()
             _material(actor, sc.color)
             self._springs.append((int(i), int(j), tube, frame, mesh))
+            self.spring_actors.append(actor)
 
         if cfg.scene.title.strip():
             pl.add_text(cfg.scene.title.strip(), position="upper_edge", color="black",
@@ -170,6 +172,10 @@ class Scene:
         rw.GetPixelData(0, 0, w - 1, h - 1, 0, self._pixels, 0)
         img = vtk_to_numpy(self._pixels).reshape(h, w, 3)
         return np.ascontiguousarray(img[::-1])
+
+    @property
+    def ball_actors(self) -> list:
+        return [actor for _, actor in self._balls]
 
     @property
     def spring_meshes(self) -> list:

@@ -1,0 +1,44 @@
+# springscene: every target does its own set-up (a .venv with the package in editable mode).
+PYTHON ?= python3
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.installed
+WIKI   := configs/wiki.toml
+
+.PHONY: setup render test bench baselines clean system-deps
+
+$(STAMP): pyproject.toml
+	$(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --upgrade pip
+	$(BIN)/python -m pip install --quiet -e '.[test]'
+	touch $(STAMP)
+
+# OSMesa (Debian's libosmesa6) is the second off-screen backend; EGL is on the machine.
+# Installed when missing and apt-get can run (as root); otherwise its tests skip.
+system-deps:
+	@if ! ldconfig -p 2>/dev/null | grep -q 'libOSMesa.so'; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing libosmesa6"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libosmesa6 >/dev/null) \
+	      || echo "could not install libosmesa6: OSMesa tests will skip"; \
+	  else echo "libosmesa6 not installed: OSMesa tests will skip"; fi; \
+	fi
+
+setup: $(STAMP) system-deps
+
+render: setup
+	@mkdir -p renders/wiki
+	$(BIN)/springscene render $(WIKI) --out renders/wiki/oscillation.mp4
+	$(BIN)/springscene still $(WIKI) --time 0 --out renders/wiki/still.png
+
+test: setup
+	$(BIN)/python -m pytest
+
+bench: setup
+	$(BIN)/python benchmarks/bench_render.py
+
+baselines: setup
+	$(BIN)/python -m pytest tests/test_render.py -k baseline --regen-baselines
+
+clean:
+	rm -rf $(VENV) renders/wiki build *.egg-info
