@@ -58,6 +58,7 @@ def _build_parser() -> argparse.ArgumentParser:
 
 def _run(args: argparse.Namespace) -> int:
     from springscene import render
+    from springscene.outputs import check_output
 
     if args.command == "info":
         from springscene.info import info
@@ -68,7 +69,8 @@ def _run(args: argparse.Namespace) -> int:
 
     cfg = config.load(args.config)
     if args.command == "simulate":
-        out = render.write_csv(render.simulate(cfg, args.duration), args.out)
+        out = check_output(args.out, (".csv",))
+        render.write_csv(render.simulate(cfg, args.duration), out)
         print(f"wrote {out}")
     elif args.command == "still":
         render.still(cfg, args.time, args.out, backend=args.backend, antialias=not args.draft)

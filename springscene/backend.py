@@ -51,17 +51,13 @@ def select(backend: str = "auto") -> str:
     if not library_present(backend):
         _, soname, package = _LIBRARY[backend]
         raise UserError(f"--backend {backend}: {soname} not found; install Debian's {package} "
-                        f"(apt-get install {package.split(' and ')[0]})")
+                        f"(apt-get install {package.replace(' and ', ' ')})")
     if _selected is not None and _selected != backend:
         raise UserError(f"--backend {backend}: this process already renders with {_selected}")
     _selected = backend
     os.environ["VTK_DEFAULT_OPENGL_WINDOW"] = _WINDOW_CLASS[backend]
     _quiet_vtk()
     return backend
-
-
-def selected() -> str | None:
-    return _selected
 
 
 def _quiet_vtk() -> None:

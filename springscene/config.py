@@ -135,8 +135,18 @@ def _positive_int(v: Any) -> int:
     return v
 
 
+MAX_CANVAS = 8192   # OpenGL renderbuffers are limited; larger canvases come out black
+
+
+def _canvas(v: Any) -> int:
+    n = _positive_int(v)
+    if n > MAX_CANVAS:
+        raise ValueError(f"must be at most {MAX_CANVAS} pixels, got {n}")
+    return n
+
+
 def _vec(v: Any) -> Vec:
-    if not isinstance(v, list) or len(v) != 3:
+    if not isinstance(v, (list, tuple)) or len(v) != 3:
         raise ValueError("must be a list of three numbers [x, y, z]")
     x, y, z = (_number(c) for c in v)
     return (x, y, z)
@@ -171,13 +181,13 @@ def _fov(v: Any) -> float:
 
 # section -> key -> checker; the keys are the dataclasses' fields.
 _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
-    "scene": {"title": _text, "width": _positive_int, "height": _positive_int,
+    "scene": {"title": _text, "width": _canvas, "height": _canvas,
               "background": parse_color},
     "camera": {"center": _vec, "forward": _nonzero_vec, "up": _nonzero_vec, "fov": _fov,
                "range": _positive},
     "physics": {"dt": _positive, "g": _vec},
     "holder": {"pos": _vec, "size": _positive_vec, "color": parse_color},
-    "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _positive,
+    "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _non_negative,
                "coils": _positive_int, "color": parse_color},
     "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
     "render": {"fps": _positive_int, "duration": _non_negative},
@@ -239,9 +249,25 @@ def load(path: str | Path) -> Config:
 
 
 def override(cfg: Config, section: str, **values: Any) -> Config:
-    """Return ``cfg`` with checked command-line values in ``section`` (None values are skipped)."""
-    values = {k: v for k, v in values.items() if v is not None}
-    if not values:
-        return cfg
-    return replace(cfg, **{section: replace(getattr(cfg, section), **values)})
+    """Return ``cfg`` with command-line values in ``section``, checked like the file's.
 
+    None values are skipped; a bad value raises :class:`UserError` naming the flag
+    (``--key``).
+    """
+    checks = _CHECKS[section]
+    checked = {key: check_flag(f"--{key}", checks[key], value)
+               for key, value in values.items() if value is not None}
+    if not checked:
+        return cfg
+    return replace(cfg, **{section: replace(getattr(cfg, section), **checked)})
+
+
+def check_flag(flag: str, check: Callable[[Any], Any], value: Any) -> Any:
+    """Run one of this module's checks on a command-line value; errors name ``flag``."""
+    try:
+        return check(value)
+    except ValueError as exc:
+        raise UserError(f"{flag} {exc}") from None
+
+
+non_negative = _non_negative

@@ -58,13 +58,13 @@ class HelixTube:
     """A helix of ``coils`` turns as a tube mesh whose points are recomputed for any axis.
 
     ``radius`` is to the centre line of the wire, ``thickness`` the wire's diameter,
-    as in VPython. The topology (faces) is fixed; :meth:`points` gives the vertex
+    as in VPython; a thickness of 0 means VPython's automatic radius/10. The topology (faces) is fixed; :meth:`points` gives the vertex
     positions and normals for a helix from ``pos`` along ``axis``.
     """
 
     def __init__(self, radius: float, thickness: float, coils: int, ccw: bool = True) -> None:
         self.radius = radius
-        self.wire = thickness / 2
+        self.wire = thickness / 2 if thickness > 0 else radius / 20
         self.coils = coils
         n = coils * CHORDS_PER_COIL + 1
         s = np.linspace(0.0, 1.0, n)
@@ -74,7 +74,11 @@ class HelixTube:
         theta = self._dtheta * s
         self._sin, self._cos = np.sin(theta), np.cos(theta)
         phi = 2 * math.pi * np.arange(TUBE_SIDES) / TUBE_SIDES
-        self._cphi, self._sphi = np.cos(phi), np.sin(phi)
+        self._sphi = np.sin(phi)
+        # the inward normal N of the centre line does not depend on the length
+        N = np.column_stack([np.zeros_like(s), -self._sin, -self._cos])
+        self._N = N
+        self._N_cphi = N[:, None, :] * np.cos(phi)[None, :, None]          # (n, 16, 3)
         self.n_rings = n
 
     def faces(self) -> np.ndarray:
@@ -101,10 +105,8 @@ class HelixTube:
         # analytic tangent and inward normal of the centre line
         T = np.column_stack([np.full_like(self._s, length), R * k * self._cos, -R * k * self._sin])
         T /= np.linalg.norm(T, axis=1)[:, None]
-        N = np.column_stack([np.zeros_like(self._s), -self._sin, -self._cos])
-        B = np.cross(T, N)
-        normals = (N[:, None, :] * self._cphi[None, :, None]
-                   + B[:, None, :] * self._sphi[None, :, None])        # (n, 16, 3)
+        B = np.cross(T, self._N)
+        normals = self._N_cphi + B[:, None, :] * self._sphi[None, :, None]   # (n, 16, 3)
         local = c[:, None, :] + self.wire * normals
         world = local.reshape(-1, 3) @ frame.T + np.asarray(pos, dtype=float)
         return world, normals.reshape(-1, 3) @ frame.T

@@ -34,6 +34,21 @@ def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out"
     return path
 
 
+GIF_MAX_FPS = 50   # GIF delays are whole centiseconds; browsers slow delays under 2 cs
+
+
+def check_video_fps(path: Path, fps: int) -> None:
+    if path.suffix.lower() == ".gif" and fps > GIF_MAX_FPS:
+        raise UserError(f"--fps {fps}: a GIF plays at most {GIF_MAX_FPS} frames/s "
+                        f"(its delays are whole centiseconds of at least 2)")
+
+
+def gif_delays(n: int, fps: int) -> list[int]:
+    """Per-frame delays in ms, whole centiseconds, whose running sum stays on t = (f+1)/fps."""
+    ends = np.rint(np.arange(1, n + 1) * 100 / fps).astype(int)
+    return (10 * np.diff(ends, prepend=0)).tolist()
+
+
 @contextlib.contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
     """Yield a temporary path beside ``path`` (same suffix); rename it to ``path`` on success."""
@@ -104,7 +119,7 @@ class VideoWriter:
         elif self._gif:
             first, rest = self._gif[0], self._gif[1:]
             first.save(self.path, format="GIF", save_all=True, append_images=rest,
-                       duration=round(1000 / self.fps), loop=0, optimize=False)
+                       duration=gif_delays(len(self._gif), self.fps), loop=0, optimize=False)
             self._gif = []
 
     def __enter__(self) -> "VideoWriter":

@@ -89,11 +89,6 @@ class System:
         """Indices of the nodes that move."""
         return self._free
 
-    def copy(self) -> "System":
-        return System(self.pos.copy(), self.p.copy(), self.m.copy(), self.fixed.copy(),
-                      self.i.copy(), self.j.copy(), self.k.copy(), self.L0.copy(),
-                      self.g.copy(), self.dt, self.t, self.steps)
-
 
 def spring_vectors(s: System) -> tuple[np.ndarray, np.ndarray]:
     """Return ``L = pos[j] - pos[i]`` (S, 3) and ``mag(L)`` (S,), as VPython computes them."""

@@ -13,23 +13,34 @@ from pathlib import Path
 
 import numpy as np
 
-from . import physics
+from . import config, physics
 from .config import Config
 from .errors import UserError
-from .outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, write_png
+from .outputs import (VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps,
+                      write_png)
 
 CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E")
 
 
-def step_at(time_s: float, dt: float) -> int:
-    """Index of the step nearest ``time_s``."""
-    if not np.isfinite(time_s) or time_s < 0:
-        raise UserError(f"--time must be a finite number >= 0, got {time_s:g}")
+MAX_STEPS = 10_000_000    # about 3 minutes of stepping; past it a typo, not a plan
+MAX_FRAMES = 360_000      # two hours at 50 fps
+
+
+def step_at(time_s: float, dt: float, flag: str = "--time") -> int:
+    """Index of the step nearest ``time_s`` (>= 0, within :data:`MAX_STEPS`)."""
+    time_s = config.check_flag(flag, config.non_negative, time_s)
+    if time_s / dt > MAX_STEPS:
+        raise UserError(f"{flag} {time_s:g} is {time_s / dt:.3g} steps of dt = {dt:g} s; "
+                        f"the limit is {MAX_STEPS:,}")
     return int(round(time_s / dt))
 
 
 def frame_steps(duration: float, fps: int, dt: float) -> np.ndarray:
     """Step index of each video frame: frame f shows the step nearest t = f/fps (real time)."""
+    step_at(duration, dt, "--duration")
+    if duration * fps > MAX_FRAMES:
+        raise UserError(f"--duration {duration:g} at --fps {fps} is {duration * fps:.3g} frames; "
+                        f"the limit is {MAX_FRAMES:,}")
     n = int(round(duration * fps))
     return np.rint(np.arange(n) / (fps * dt)).astype(np.int64)
 
@@ -38,9 +49,8 @@ def frame_steps(duration: float, fps: int, dt: float) -> np.ndarray:
 
 def simulate(cfg: Config, duration: float | None = None) -> physics.Trajectory:
     """The ball's trajectory from t = 0 to ``duration`` (default: the config's), one row per step."""
-    duration = cfg.render.duration if duration is None else duration
-    _check_duration(duration)
-    return physics.run(cfg.system(), int(round(duration / cfg.physics.dt)))
+    cfg = config.override(cfg, "render", duration=duration)
+    return physics.run(cfg.system(), step_at(cfg.render.duration, cfg.physics.dt, "--duration"))
 
 
 def write_csv(traj: physics.Trajectory, out: str | Path) -> Path:
@@ -76,7 +86,8 @@ class RenderStats:
     path: Path
     frames: int
     fps: int
-    seconds: float      # wall time
+    seconds: float       # wall time, set-up included
+    loop_seconds: float  # the frame loop and the encoder's flush, set-up excluded
 
     @property
     def frames_per_second(self) -> float:
@@ -88,14 +99,12 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
                  progress: bool = False) -> RenderStats:
     """Render the oscillation in real time (one video second per simulated second) to MP4 or GIF."""
     path = check_output(out, VIDEO_FORMATS)
-    duration = cfg.render.duration if duration is None else duration
-    fps = cfg.render.fps if fps is None else fps
-    _check_duration(duration)
-    if fps <= 0:
-        raise UserError(f"--fps must be > 0, got {fps}")
+    cfg = config.override(cfg, "render", duration=duration, fps=fps)
+    duration, fps = cfg.render.duration, cfg.render.fps
     steps = frame_steps(duration, fps, cfg.physics.dt)
     if len(steps) == 0:
         raise UserError(f"--duration {duration:g} at --fps {fps} gives no frame")
+    check_video_fps(path, fps)
     from tqdm import tqdm
 
     from .scene import Scene
@@ -103,16 +112,13 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     system = cfg.system()
     start = time.perf_counter()
     with Scene(cfg, system, antialias=antialias, backend_name=backend) as scene, \
-            atomic_path(path) as tmp, \
-            VideoWriter(tmp, fps, (cfg.scene.width, cfg.scene.height)) as writer:
-        for target in tqdm(steps, desc=path.name, unit="frame", disable=not progress,
-                           leave=False):
-            physics.step(system, int(target) - system.steps)
-            scene.update(system)
-            writer.write(scene.frame())
-    return RenderStats(path, len(steps), fps, time.perf_counter() - start)
-
-
-def _check_duration(duration: float) -> None:
-    if not np.isfinite(duration) or duration < 0:
-        raise UserError(f"--duration must be a finite number >= 0, got {duration:g}")
+            atomic_path(path) as tmp:
+        with VideoWriter(tmp, fps, (cfg.scene.width, cfg.scene.height)) as writer:
+            loop_start = time.perf_counter()
+            for target in tqdm(steps, desc=path.name, unit="frame", disable=not progress,
+                               leave=False):
+                physics.step(system, int(target) - system.steps)
+                scene.update(system)
+                writer.write(scene.frame())
+        end = time.perf_counter()
+    return RenderStats(path, len(steps), fps, time.perf_counter() - start, end - loop_start)

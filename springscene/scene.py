@@ -28,8 +28,9 @@ MULTI_SAMPLES = 4        # MSAA when anti-aliased
 
 
 def _material(actor, color) -> None:
-    """VPython's shading: ambient*C + sum lc*max(N.L,0)*C + 0.8*lc*max(R.V,0)^60."""
+    """VPython's shading, per pixel: ambient*C + sum lc*max(N.L,0)*C + 0.8*lc*max(R.V,0)^60."""
     prop = actor.GetProperty()
+    prop.SetInterpolationToPhong()
     prop.SetColor(*color)
     prop.SetAmbient(AMBIENT)
     prop.SetDiffuse(1.0)
@@ -76,7 +77,9 @@ class Scene:
             c = system.pos[node]
             half = np.asarray(cfg.holder.size) / 2
             box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
-            _material(pl.add_mesh(box, smooth_shading=False), cfg.holder.color)
+            actor = pl.add_mesh(box, smooth_shading=False)
+            _material(actor, cfg.holder.color)
+            actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
             self._holder_bounds.append(np.stack([c - half, c + half]))
 
         # balls: one sphere mesh, moved by its actor's position
@@ -91,7 +94,6 @@ class Scene:
 
         # springs: tube meshes whose points are rewritten in place
         self._springs = []
-        self.spring_actors: list = []
         sc = cfg.spring
         for i, j in zip(system.i, system.j):
             tube = HelixTube(sc.radius, sc.thickness, sc.coils)
@@ -104,12 +106,12 @@ class Scene:
             actor = pl.add_mesh(mesh, smooth_shading=False, show_scalar_bar=False)
             actor.GetMapper().ScalarVisibilityOff()
             _material(actor, sc.color)
-            self._springs.append((int(i), int(j), tube, frame, mesh))
-            self.spring_actors.append(actor)
+            self._springs.append((int(i), int(j), tube, frame, mesh, actor))
 
         if cfg.scene.title.strip():
-            pl.add_text(cfg.scene.title.strip(), position="upper_edge", color="black",
-                        font_size=12, name="title")
+            luminance = float(np.dot(cfg.scene.background, (0.2126, 0.7152, 0.0722)))
+            pl.add_text(cfg.scene.title.strip(), position="upper_edge", font_size=12,
+                        color="black" if luminance > 0.5 else "white", name="title")
         self._autoscale = camera.Autoscaler()
         self.view: camera.View | None = None
         self._range: float | None = None
@@ -122,7 +124,7 @@ class Scene:
         """Move balls and redraw springs along ``pos[j] - pos[i]`` (``spring.axis = ball.pos - holder.pos``)."""
         for node, actor in self._balls:
             actor.SetPosition(*system.pos[node])
-        for i, j, tube, frame, mesh in self._springs:
+        for i, j, tube, frame, mesh, _ in self._springs:
             axis = system.pos[j] - system.pos[i]
             pts, normals = tube.points(system.pos[i], axis, frame.set_axis(axis))
             mesh.points[:] = pts
@@ -136,7 +138,7 @@ class Scene:
         r = self.cfg.ball.radius
         b = list(self._holder_bounds)
         b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]
-        for *_, mesh in self._springs:
+        for *_, mesh, _ in self._springs:
             x0, x1, y0, y1, z0, z1 = mesh.bounds
             b.append(np.array([[x0, y0, z0], [x1, y1, z1]]))
         return np.array(b)
@@ -180,11 +182,11 @@ class Scene:
     @property
     def spring_meshes(self) -> list:
         """The springs' tube meshes (their points are rewritten each frame)."""
-        return [mesh for *_, mesh in self._springs]
+        return [spring[4] for spring in self._springs]
 
     @property
-    def render_window(self):
-        return self.plotter.ren_win
+    def spring_actors(self) -> list:
+        return [spring[5] for spring in self._springs]
 
     def close(self) -> None:
         self.plotter.close()

@@ -15,8 +15,8 @@ import imageio.v3 as iio
 import numpy as np
 
 PIXEL_TOLERANCE = 24
-MAX_BAD_FRACTION = 0.002
-MAX_MEAN_DIFF = 0.5
+MAX_BAD_FRACTION = 0.0005
+MAX_MEAN_DIFF = 0.2
 
 
 def compare(image: np.ndarray, baseline: np.ndarray) -> tuple[float, float]:

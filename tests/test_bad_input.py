@@ -34,6 +34,8 @@ BAD_CONFIGS = [
     ('color = "red"', 'color = "octarine"', "[ball] color unknown colour"),
     ("width = 900", "width = true", "[scene] width must be a whole number"),
     ("k = 15.0", "k = 15.0 15", "invalid TOML"),
+    ("width = 900", "width = 40000", "[scene] width must be at most 8192 pixels"),
+    ("thickness = 0.003", "thickness = -0.003", "[spring] thickness must be >= 0"),
 ]
 
 
@@ -52,9 +54,9 @@ def test_bad_config(tmp_path, old, new, message):
 
 @pytest.mark.parametrize("args, message", [
     (["simulate", "missing.toml", "--out", "{tmp}/t.csv"], "missing.toml: no such config file"),
-    (["still", WIKI, "--time", "-1", "--out", "{tmp}/a.png"], "--time must be a finite number >= 0"),
-    (["still", WIKI, "--time", "nan", "--out", "{tmp}/a.png"], "--time must be a finite number"),
-    (["simulate", WIKI, "--duration", "-2", "--out", "{tmp}/t.csv"], "--duration must be a finite"),
+    (["still", WIKI, "--time", "-1", "--out", "{tmp}/a.png"], "--time must be >= 0, got -1"),
+    (["still", WIKI, "--time", "nan", "--out", "{tmp}/a.png"], "--time must be finite, got nan"),
+    (["simulate", WIKI, "--duration", "-2", "--out", "{tmp}/t.csv"], "--duration must be >= 0, got -2"),
     (["render", WIKI, "--fps", "0", "--out", "{tmp}/v.mp4"], "--fps must be > 0"),
     (["render", WIKI, "--out", "{tmp}/v.avi"], "unknown output format '.avi'"),
     (["still", WIKI, "--out", "{tmp}/a.jpg"], "unknown output format '.jpg'"),
@@ -62,6 +64,10 @@ def test_bad_config(tmp_path, old, new, message):
     (["render", WIKI, "--backend", "vulkan", "--out", "{tmp}/v.mp4"], "--backend"),
     (["render", WIKI, "--fps", "ten", "--out", "{tmp}/v.mp4"], "--fps"),
     (["frobnicate"], "invalid choice"),
+    (["simulate", WIKI, "--duration", "1e307", "--out", "{tmp}/t.csv"], "--duration 1e+307 is"),
+    (["render", WIKI, "--duration", "1e12", "--out", "{tmp}/v.mp4"], "the limit is"),
+    (["still", WIKI, "--time", "1e9", "--out", "{tmp}/a.png"], "--time 1e+09 is 1e+11 steps"),
+    (["render", WIKI, "--fps", "60", "--out", "{tmp}/v.gif"], "--fps 60: a GIF plays at most 50"),
 ])
 def test_bad_flags(tmp_path, args, message):
     args = [str(a).replace("{tmp}", str(tmp_path)) for a in args]
