@@ -7,11 +7,14 @@ Everything a command does is a call into the ``springscene`` library.
 from __future__ import annotations
 
 import argparse
+import json
 import sys
 
 from springscene import config
 from springscene.backend import BACKENDS
 from springscene.errors import UserError
+from springscene.integrators import NAMES
+from springscene.overlay import OVERLAYS, parse_overlays
 
 EXIT_BAD_INPUT = 2
 
@@ -32,16 +35,38 @@ def _build_parser() -> argparse.ArgumentParser:
                         help="off-screen OpenGL: EGL, OSMesa, or auto (EGL if present)")
         sp.add_argument("--draft", action="store_true", help="no anti-aliasing (faster)")
 
+    def physics(sp: argparse.ArgumentParser) -> None:
+        sp.add_argument("--integrator", choices=NAMES,
+                        help="time integrator (default: the config's, else euler-cromer)")
+        sp.add_argument("--dt", type=float, help="time step in s (default: the config's)")
+
     s = sub.add_parser("simulate", help="write the ball's trajectory as CSV")
     s.add_argument("config")
     s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
     s.add_argument("--out", required=True, help="trajectory.csv")
+    physics(s)
+
+    s = sub.add_parser("analyze", help="period, frequency, energy... measured beside theory")
+    s.add_argument("config")
+    s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
+    s.add_argument("--json", action="store_true", help="one JSON object instead of a table")
+    physics(s)
+
+    s = sub.add_parser("sweep", help="steady-state amplitude against drive frequency")
+    s.add_argument("config")
+    s.add_argument("--omega", required=True, metavar="START:STOP:N",
+                   help="N drive frequencies from START to STOP rad/s")
+    s.add_argument("--periods", type=float, default=200,
+                   help="drive periods of the slowest frequency to run (default 200)")
+    s.add_argument("--out", help="curve.csv (omega, frequency, amplitude, theory)")
+    physics(s)
 
     s = sub.add_parser("still", help="render the scene at one time to PNG")
     s.add_argument("config")
     s.add_argument("--time", type=float, default=0.0, help="simulated time in s (nearest step)")
     s.add_argument("--out", required=True, help="frame.png")
     renders(s)
+    physics(s)
 
     s = sub.add_parser("render", help="render the oscillation to MP4 or GIF in real time")
     s.add_argument("config")
@@ -49,6 +74,15 @@ def _build_parser() -> argparse.ArgumentParser:
     s.add_argument("--fps", type=int, help="frames per second (default: the config's)")
     s.add_argument("--out", required=True, help="video.mp4 or video.gif")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
+    s.add_argument("--overlay", default="", metavar="LIST",
+                   help="comma list of: " + ", ".join(OVERLAYS)
+                   + " (a clock, a y(t) graph under the scene, energy bars beside it)")
+    renders(s)
+    physics(s)
+
+    s = sub.add_parser("figures", help="the wiki page's figures, GIF and gallery snippet")
+    s.add_argument("config")
+    s.add_argument("--out", required=True, help="folder for the figures (created if missing)")
     renders(s)
 
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
@@ -68,16 +102,46 @@ def _run(args: argparse.Namespace) -> int:
         return 0
 
     cfg = config.load(args.config)
+    if hasattr(args, "dt"):
+        cfg = config.override(cfg, "physics", integrator=args.integrator, dt=args.dt)
     if args.command == "simulate":
         out = check_output(args.out, (".csv",))
         render.write_csv(render.simulate(cfg, args.duration), out)
         print(f"wrote {out}")
+    elif args.command == "analyze":
+        from springscene import analysis
+
+        result = analysis.analyze(config.override(cfg, "render", duration=args.duration))
+        if args.json:
+            print(json.dumps({"measured": result["measured"], "theory": result["theory"],
+                              "regime": result["regime"], "integrator": result["integrator"],
+                              "dt": result["dt"], "duration": result["duration"]}, indent=2))
+        else:
+            print(analysis.table(result))
+    elif args.command == "sweep":
+        from springscene import sweep
+
+        omega = sweep.parse_omega(args.omega)
+        sweep.check_sweepable(cfg)
+        out = check_output(args.out, (".csv",)) if args.out else None
+        result = sweep.sweep(cfg, omega, periods=args.periods)
+        print(sweep.summary(result))
+        if out is not None:
+            sweep.write_csv(result, out)
+            print(f"wrote {out}")
+    elif args.command == "figures":
+        from springscene import figures
+
+        for path in figures.make_figures(cfg, args.out, backend=args.backend,
+                                         antialias=not args.draft):
+            print(f"wrote {path}")
     elif args.command == "still":
         render.still(cfg, args.time, args.out, backend=args.backend, antialias=not args.draft)
         print(f"wrote {args.out}")
     elif args.command == "render":
         stats = render.render_video(cfg, args.out, duration=args.duration, fps=args.fps,
                                     backend=args.backend, antialias=not args.draft,
+                                    overlays=parse_overlays(args.overlay),
                                     progress=not args.quiet and sys.stderr.isatty())
         if not args.quiet:
             print(f"wrote {stats.path}: {stats.frames} frames at {stats.fps} fps "

@@ -17,7 +17,8 @@ import numpy as np
 
 from .colors import Color, parse_color
 from .errors import UserError
-from .physics import System
+from . import integrators, physics
+from .physics import Drive, System
 
 Vec = tuple[float, float, float]
 
@@ -45,6 +46,25 @@ class CameraCfg:
 class PhysicsCfg:
     dt: float = 0.01
     g: Vec = (0.0, -9.8, 0.0)
+    integrator: str = "euler-cromer"
+
+
+@dataclass(frozen=True)
+class DampingCfg:
+    """Linear drag on the ball, F = -b v (kg/s)."""
+
+    b: float = 0.0
+
+
+@dataclass(frozen=True)
+class DriveCfg:
+    """``support``: the holder moves as A sin(omega t) along ``direction`` (A in m).
+    ``force``: the ball feels F0 cos(omega t) along ``direction`` (A = F0 in N)."""
+
+    type: str = "none"
+    amplitude: float = 0.0
+    omega: float = 0.0
+    direction: Vec = (0.0, 1.0, 0.0)
 
 
 @dataclass(frozen=True)
@@ -62,6 +82,8 @@ class SpringCfg:
     thickness: float = 0.003
     coils: int = 15
     color: Color = (0.0, 1.0, 1.0)
+    k3: float = 0.0                       # stiffening, N/m^3: F = -(k s + k3 s^3)
+    yield_stretch: float = math.inf       # elastic limit of |stretch| (m); beyond it L0 sets
 
 
 @dataclass(frozen=True)
@@ -84,22 +106,42 @@ class Config:
     scene: SceneCfg = field(default_factory=SceneCfg)
     camera: CameraCfg = field(default_factory=CameraCfg)
     physics: PhysicsCfg = field(default_factory=PhysicsCfg)
+    damping: DampingCfg = field(default_factory=DampingCfg)
+    drive: DriveCfg = field(default_factory=DriveCfg)
     holder: HolderCfg = field(default_factory=HolderCfg)
     spring: SpringCfg = field(default_factory=SpringCfg)
     ball: BallCfg = field(default_factory=BallCfg)
     render: RenderCfg = field(default_factory=RenderCfg)
     source: str = "<defaults>"
 
-    def system(self) -> System:
-        """The physics system: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball."""
+    @property
+    def driven(self) -> bool:
+        return self.drive.type != "none"
+
+    def system(self, omega: Any = None) -> System:
+        """The physics system: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball.
+
+        With ``omega`` an array of N drive frequencies, N independent copies side by
+        side (holder 2c, ball 2c+1, spring c), copy c driven at ``omega[c]``: a
+        resonance sweep as one system.
+        """
+        w = np.atleast_1d(np.asarray(self.drive.omega if omega is None else omega, float))
+        n = len(w) if omega is not None else 1
+        holder, ball = np.arange(0, 2 * n, 2), np.arange(1, 2 * n, 2)
+        pos = np.empty((2 * n, 3))
+        pos[holder], pos[ball] = self.holder.pos, self.ball.pos
+        p = np.zeros((2 * n, 3))
+        p[ball] = self.ball.p
+        drive = None
+        if self.driven:
+            nodes = holder if self.drive.type == "support" else ball
+            drive = Drive(self.drive.type, nodes, self.drive.amplitude, w, self.drive.direction)
+        s = self.spring
         return System(
-            pos=[self.holder.pos, self.ball.pos],
-            p=[(0.0, 0.0, 0.0), self.ball.p],
-            m=[1.0, self.ball.m],
-            fixed=[True, False],
-            i=[0], j=[1],
-            k=[self.spring.k], L0=[self.spring.L0],
-            g=self.physics.g, dt=self.physics.dt,
+            pos=pos, p=p, m=np.tile([1.0, self.ball.m], n), fixed=np.tile([True, False], n),
+            i=holder, j=ball, k=s.k, L0=s.L0, k3=s.k3, yield_stretch=s.yield_stretch,
+            g=self.physics.g, dt=self.physics.dt, b=np.tile([0.0, self.damping.b], n),
+            drive=drive, integrator=self.physics.integrator,
         )
 
 
@@ -172,6 +214,15 @@ def _text(v: Any) -> str:
     return v
 
 
+def _choice(*options: str) -> Callable[[Any], str]:
+    def check(v: Any) -> str:
+        s = _text(v)
+        if s not in options:
+            raise ValueError(f"must be one of {', '.join(repr(o) for o in options)}, got {s!r}")
+        return s
+    return check
+
+
 def _fov(v: Any) -> float:
     x = _positive(v)
     if x >= math.pi:
@@ -185,10 +236,14 @@ _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
               "background": parse_color},
     "camera": {"center": _vec, "forward": _nonzero_vec, "up": _nonzero_vec, "fov": _fov,
                "range": _positive},
-    "physics": {"dt": _positive, "g": _vec},
+    "physics": {"dt": _positive, "g": _vec, "integrator": _choice(*integrators.NAMES)},
+    "damping": {"b": _non_negative},
+    "drive": {"type": _choice("none", "support", "force"), "amplitude": _positive,
+              "omega": _positive, "direction": _nonzero_vec},
     "holder": {"pos": _vec, "size": _positive_vec, "color": parse_color},
     "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _non_negative,
-               "coils": _positive_int, "color": parse_color},
+               "coils": _positive_int, "color": parse_color, "k3": _non_negative,
+               "yield_stretch": _positive},
     "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
     "render": {"fps": _positive_int, "duration": _non_negative},
 }
@@ -218,14 +273,53 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> Config:
     return cfg
 
 
-def _check_whole(cfg: Config) -> None:
-    """Checks that involve more than one key."""
+def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
+    """Checks that involve more than one key.
+
+    ``flags`` maps "section.key" to the command-line flag that set it, so a
+    message names the flag rather than the file when the flag is to blame.
+    """
     src = cfg.source
+    flags = flags or {}
+
+    def where(*keys: str) -> str:
+        named = [flags[k] for k in keys if k in flags]
+        if named:
+            return " ".join(named)
+        section, key = keys[0].split(".")
+        return f"{src}: [{section}] {key}"
+
+    d = cfg.drive
+    if d.type != "none":
+        for key in ("amplitude", "omega"):
+            if getattr(d, key) <= 0:
+                raise UserError(f"{src}: [drive] {key} is required (> 0) when type = {d.type!r}")
+    problem = stability_problem(cfg)
+    if problem:
+        raise UserError(f"{where('physics.dt', 'physics.integrator')}: {problem}")
     if np.allclose(cfg.ball.pos, cfg.holder.pos, rtol=0, atol=1e-12):
         raise UserError(f"{src}: [ball] pos must differ from [holder] pos (the spring has no direction)")
     c = cfg.camera
     if abs(float(np.dot(c.forward, c.up))) >= 0.999999 * np.linalg.norm(c.forward) * np.linalg.norm(c.up):
         raise UserError(f"{src}: [camera] up must not be parallel to [camera] forward")
+
+
+def stability_problem(cfg: Config) -> str | None:
+    """Why the config's step would make its integrator blow up, with a step that would not."""
+    name, dt = cfg.physics.integrator, cfg.physics.dt
+    omega, gamma = physics.mode_bounds(cfg.system())
+    if integrators.stable(name, omega, gamma, dt):
+        return None
+    w, gm = float(omega.max()), float(gamma.max())
+    h_max = integrators.largest_stable_step(name, omega, gamma, dt)
+    rule = {"euler-cromer": "needs omega*dt < 2", "verlet": "needs omega*dt < 2",
+            "rk4": "needs omega*dt < 2.83",
+            "euler": f"grows the amplitude more than {integrators.EULER_MAX_GROWTH_PER_PERIOD:g}x "
+                     "per period"}[name]
+    damped = f", b/2m = {gm:.3g} /s" if gm > 0 else ""
+    return (f"dt = {dt:g} s is unstable for {name} (omega = sqrt(k/m) = {w:.4g} rad/s, "
+            f"omega*dt = {w * dt:.3g}{damped}; {name} {rule}); "
+            f"use dt <= {integrators.suggest_step(h_max):g} s")
 
 
 def load(path: str | Path) -> Config:
@@ -259,7 +353,9 @@ def override(cfg: Config, section: str, **values: Any) -> Config:
                for key, value in values.items() if value is not None}
     if not checked:
         return cfg
-    return replace(cfg, **{section: replace(getattr(cfg, section), **checked)})
+    new = replace(cfg, **{section: replace(getattr(cfg, section), **checked)})
+    _check_whole(new, {f"{section}.{key}": f"--{key}" for key in checked})
+    return new
 
 
 def check_flag(flag: str, check: Callable[[Any], Any], value: Any) -> Any:

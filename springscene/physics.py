@@ -1,12 +1,14 @@
 """The ball-and-spring engine: plain numpy state and pure step functions.
 
 One engine serves every scene: a set of nodes (balls and fixed anchors) joined
-by Hooke's-law springs, under a uniform gravitational field. The wiki scene is
-one fixed holder node, one ball node and one spring; a crystal is the same with
-more rows. Nothing here imports VTK or draws anything.
+by springs, under a uniform gravitational field, with optional linear drag, a
+periodic drive and springs that stiffen or yield. The wiki scene is one fixed
+holder node, one ball node and one spring; a resonance sweep is a thousand such
+pairs side by side; a crystal is the same with more rows. Nothing here imports
+VTK or draws anything.
 
-The step is the page's momentum principle, stepped by Euler-Cromer, in exactly
-the page's order (Model 14)::
+The default step is the page's momentum principle, stepped by Euler-Cromer, in
+exactly the page's order (Model 14)::
 
     L    = ball.pos - holder.pos
     Fs   = -k * (mag(L) - L0) * norm(L)
@@ -17,6 +19,18 @@ the page's order (Model 14)::
 
 Every operation is the same float64 operation, in the same order, as VPython's
 ``vector`` arithmetic, so a single spring reproduces the wiki's loop bit for bit.
+Other integrators (:mod:`springscene.integrators`) use the same forces.
+
+Beyond Hooke's law (all off by default):
+
+- drag ``F = -b v`` on each node (``b`` in kg/s); the energy it takes is
+  tallied in ``E_thermal``;
+- a stiffening term: ``F = -(k s + k3 s^3)`` along the spring, s = |L| - L0;
+- an elastic limit: stretched (or compressed) beyond ``yield_stretch`` a spring
+  takes a permanent set, L0 moves so that |s| = yield_stretch, and the elastic
+  energy released goes to ``E_thermal`` (plastic work heats the metal);
+- a :class:`Drive`: driven support nodes moving as ``A sin(omega t)``, or an
+  external force ``F0 cos(omega t)`` on chosen nodes.
 """
 
 from __future__ import annotations
@@ -24,6 +38,50 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+
+from . import integrators
+
+DRIVE_KINDS = ("support", "force")
+
+
+@dataclass
+class Drive:
+    """A periodic drive, one frequency per driven node.
+
+    Parameters
+    ----------
+    kind : "support" or "force"
+        ``support``: the (fixed) nodes move as ``base + A sin(omega t) direction``.
+        ``force``: the (free) nodes feel ``A cos(omega t) direction`` (A in N).
+    nodes : (D,) int array
+    amplitude, omega : (D,) float arrays (m or N; rad/s)
+    direction : (3,) unit vector
+    """
+
+    kind: str
+    nodes: np.ndarray
+    amplitude: np.ndarray
+    omega: np.ndarray
+    direction: np.ndarray
+    base: np.ndarray | None = None     # support nodes' rest positions, set by System
+
+    def __post_init__(self) -> None:
+        if self.kind not in DRIVE_KINDS:
+            raise ValueError(f"drive kind must be one of {DRIVE_KINDS}, got {self.kind!r}")
+        self.nodes = np.asarray(self.nodes, dtype=np.intp).reshape(-1)
+        d = len(self.nodes)
+        self.amplitude = np.broadcast_to(np.asarray(self.amplitude, float), (d,)).copy()
+        self.omega = np.broadcast_to(np.asarray(self.omega, float), (d,)).copy()
+        u = np.asarray(self.direction, float).reshape(3)
+        self.direction = u / np.linalg.norm(u)
+
+    def offsets(self, t: float) -> np.ndarray:
+        """Support displacement (D, 3) at time t."""
+        return (self.amplitude * np.sin(self.omega * t))[:, None] * self.direction
+
+    def force(self, t: float) -> np.ndarray:
+        """External force (D, 3) at time t."""
+        return (self.amplitude * np.cos(self.omega * t))[:, None] * self.direction
 
 
 @dataclass
@@ -39,7 +97,7 @@ class System:
     m : (N,) float64 array
         Node masses in kg (ignored for fixed nodes).
     fixed : (N,) bool array
-        True for anchors that never move (the holder).
+        True for anchors that never move by force (the holder; it may be driven).
     i, j : (S,) int arrays
         Each spring joins node ``i`` (its start, e.g. the holder) to node ``j``
         (its end, e.g. the ball); ``L = pos[j] - pos[i]``.
@@ -49,6 +107,15 @@ class System:
         Gravitational field (m/s^2).
     dt : float
         Time step (s).
+    b : (N,) float64 array
+        Linear drag coefficient per node (kg/s), ``F = -b p/m``.
+    k3 : (S,) float64 array
+        Cubic stiffening (N/m^3).
+    yield_stretch : (S,) float64 array
+        Elastic limit of |mag(L) - L0| (m); inf for none.
+    drive : Drive or None
+    integrator : str
+        One of :data:`springscene.integrators.NAMES`.
     """
 
     pos: np.ndarray
@@ -61,8 +128,14 @@ class System:
     L0: np.ndarray
     g: np.ndarray
     dt: float
+    b: np.ndarray | float = 0.0
+    k3: np.ndarray | float = 0.0
+    yield_stretch: np.ndarray | float = np.inf
+    drive: Drive | None = None
+    integrator: str = "euler-cromer"
     t: float = 0.0
     steps: int = 0
+    E_thermal: float = 0.0
     _free: np.ndarray = field(init=False, repr=False)
 
     def __post_init__(self) -> None:
@@ -77,8 +150,28 @@ class System:
         self.k = np.broadcast_to(np.asarray(self.k, dtype=np.float64), (s,)).copy()
         self.L0 = np.broadcast_to(np.asarray(self.L0, dtype=np.float64), (s,)).copy()
         self.g = np.asarray(self.g, dtype=np.float64).reshape(3)
+        self.b = np.broadcast_to(np.asarray(self.b, dtype=np.float64), (n,)).copy()
+        self.k3 = np.broadcast_to(np.asarray(self.k3, dtype=np.float64), (s,)).copy()
+        self.yield_stretch = np.broadcast_to(
+            np.asarray(self.yield_stretch, dtype=np.float64), (s,)).copy()
+        if self.integrator not in integrators.STEPPERS:
+            raise ValueError(f"integrator must be one of {integrators.NAMES}, "
+                             f"got {self.integrator!r}")
         self.p[self.fixed] = 0.0
+        self.b[self.fixed] = 0.0
+        self.m[self.fixed & ~(self.m > 0)] = 1.0     # anchors never divide by their mass
         self._free = np.flatnonzero(~self.fixed)
+        anchors = np.flatnonzero(self.fixed)
+        self.ref = self.pos[anchors[0]].copy() if len(anchors) else np.zeros(3)
+        if self.drive is not None:
+            on_fixed = self.fixed[self.drive.nodes]
+            if self.drive.kind == "support" and not on_fixed.all():
+                raise ValueError("a driven support must be a fixed node")
+            if self.drive.kind == "force" and on_fixed.any():
+                raise ValueError("a driving force must act on free nodes")
+            if self.drive.kind == "support":
+                self.drive.base = self.pos[self.drive.nodes].copy()
+                self.pos[self.drive.nodes] = self.drive.base + self.drive.offsets(self.t)
 
     @property
     def n_nodes(self) -> int:
@@ -89,22 +182,40 @@ class System:
         """Indices of the nodes that move."""
         return self._free
 
+    @property
+    def has_drag(self) -> bool:
+        return bool(np.any(self.b))
 
-def spring_vectors(s: System) -> tuple[np.ndarray, np.ndarray]:
+    @property
+    def is_plastic(self) -> bool:
+        return bool(np.any(np.isfinite(self.yield_stretch)))
+
+
+def spring_vectors(s: System, pos: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Return ``L = pos[j] - pos[i]`` (S, 3) and ``mag(L)`` (S,), as VPython computes them."""
-    L = s.pos[s.j] - s.pos[s.i]
+    pos = s.pos if pos is None else pos
+    L = pos[s.j] - pos[s.i]
     mag = np.sqrt(L[:, 0] ** 2 + L[:, 1] ** 2 + L[:, 2] ** 2)
     return L, mag
 
 
-def net_forces(s: System) -> np.ndarray:
-    """Net force on every node (N, 3): Hooke's-law springs plus gravity.
+def forces(s: System, pos: np.ndarray, t: float) -> np.ndarray:
+    """Net force without drag on every node (N, 3) at positions ``pos`` and time ``t``.
 
-    For one spring this is ``(-k*(mag(L)-L0)) * (L/mag(L)) + m*g`` on the ball,
-    the page's ``Fs + Fg`` to the last bit. Fixed nodes get zero.
+    Springs, gravity and the drive; drag ``-b p/m`` is left to the integrator
+    (see :mod:`springscene.integrators`). For one spring this is
+    ``(-k*(mag(L)-L0)) * (L/mag(L)) + m*g`` on the ball, the page's ``Fs + Fg``
+    to the last bit. Fixed nodes get zero.
     """
-    L, mag = spring_vectors(s)
-    coef = -s.k * (mag - s.L0)
+    drive = s.drive
+    if drive is not None and drive.kind == "support":
+        pos = pos.copy()
+        pos[drive.nodes] = drive.base + drive.offsets(t)
+    L, mag = spring_vectors(s, pos)
+    stretch = mag - s.L0
+    coef = -s.k * stretch
+    if s.k3.any():
+        coef = coef - s.k3 * stretch ** 3
     Fs = coef[:, None] * (L / mag[:, None])
     n = s.n_nodes
     F = np.empty((n, 3))
@@ -112,66 +223,140 @@ def net_forces(s: System) -> np.ndarray:
         F[:, c] = (np.bincount(s.j, weights=Fs[:, c], minlength=n)
                    - np.bincount(s.i, weights=Fs[:, c], minlength=n))
     F += s.m[:, None] * s.g
+    if drive is not None and drive.kind == "force":
+        F[drive.nodes] += drive.force(t)
     F[s.fixed] = 0.0
     return F
 
 
+def mode_bounds(s: System) -> tuple[np.ndarray, np.ndarray]:
+    """Per free node, an upper bound on the angular frequency of any linear mode it
+    takes part in (Gershgorin's circle theorem on the mass-weighted stiffness
+    matrix, linear Hooke part) and its drag rate gamma = b/2m.
+
+    For a ball on one spring from a fixed holder this is exactly sqrt(k/m).
+    """
+    free = ~s.fixed
+    m = s.m
+    rows = np.zeros(s.n_nodes)
+    for a, b in ((s.i, s.j), (s.j, s.i)):
+        # diagonal term k/m_a, and off-diagonal k/sqrt(m_a m_b) when b also moves
+        rows += np.bincount(a, weights=s.k / m[a], minlength=s.n_nodes)
+        rows += np.bincount(a, weights=np.where(free[b], s.k / np.sqrt(m[a] * m[b]), 0.0),
+                            minlength=s.n_nodes)
+    return np.sqrt(rows[free]), (s.b / (2 * m))[free]
+
+
+def net_forces(s: System) -> np.ndarray:
+    """Net force on every node (N, 3) in the current state, drag included."""
+    F = forces(s, s.pos, s.t)
+    if s.has_drag:
+        F -= (s.b / s.m)[:, None] * s.p
+    return F
+
+
 def step(s: System, n: int = 1) -> System:
-    """Advance ``s`` in place by ``n`` Euler-Cromer steps of ``s.dt`` and return it."""
-    free = s.free
-    m = s.m[free, None]
+    """Advance ``s`` in place by ``n`` steps of ``s.dt`` with its integrator and return it."""
+    advance = integrators.STEPPERS[s.integrator]
+    m = s.m[:, None]
+    drive = s.drive if s.drive is not None and s.drive.kind == "support" else None
+    plastic = s.is_plastic
+    beta = (s.b / s.m)[:, None] if s.has_drag else None
+
+    def f(pos, t):
+        return forces(s, pos, t)
+
     for _ in range(n):
-        Fnet = net_forces(s)
-        s.p[free] = s.p[free] + Fnet[free] * s.dt
-        s.pos[free] = s.pos[free] + (s.p[free] / m) * s.dt
+        pos, p, heat = advance(s.pos, s.p, m, s.t, s.dt, f, beta)
         s.steps += 1
         s.t = s.steps * s.dt
+        s.pos, s.p = pos, p
+        s.E_thermal += heat
+        if drive is not None:
+            s.pos[drive.nodes] = drive.base + drive.offsets(s.t)
+        if plastic:
+            _yield(s)
     return s
+
+
+def _yield(s: System) -> None:
+    """Permanent set: a spring stretched beyond its limit gets a longer (or shorter) L0.
+
+    The elastic energy released, Us(old L0) - Us(new L0) at the same length,
+    goes to ``E_thermal``.
+    """
+    _, mag = spring_vectors(s)
+    stretch = mag - s.L0
+    over = np.abs(stretch) > s.yield_stretch
+    if not over.any():
+        return
+    before = _spring_energy(s.k[over], s.k3[over], stretch[over])
+    limit = np.sign(stretch[over]) * s.yield_stretch[over]
+    s.L0[over] = mag[over] - limit
+    after = _spring_energy(s.k[over], s.k3[over], limit)
+    s.E_thermal += float(np.sum(before - after))
+
+
+def _spring_energy(k, k3, stretch):
+    return 0.5 * k * stretch ** 2 + 0.25 * k3 * stretch ** 4
 
 
 @dataclass
 class Energies:
-    """Kinetic, spring and gravitational energy (J) and their sum."""
+    """Kinetic, spring and gravitational energy (J), and the thermal energy made so far."""
 
     K: float
     Us: float
     Ug: float
+    E_thermal: float = 0.0
 
     @property
     def E(self) -> float:
+        """Mechanical energy K + Us + Ug."""
         return self.K + self.Us + self.Ug
+
+    @property
+    def total(self) -> float:
+        """K + Us + Ug + E_thermal: constant without a drive, up to the integrator's error."""
+        return self.E + self.E_thermal
 
 
 def energies(s: System) -> Energies:
-    """K = |p|^2/2m, Us = 1/2 k (|L| - L0)^2, Ug = -m g . (r - r_ref).
+    """K = |p|^2/2m, Us = 1/2 k s^2 + 1/4 k3 s^4, Ug = -m g . (r - r_ref), and E_thermal.
 
-    ``r_ref`` is the first fixed node (the holder), so with g = <0, -9.8, 0>
-    Ug = m |g| y with y measured from the holder's height.
+    ``r_ref`` is the first fixed node's starting position (the holder), so with
+    g = <0, -9.8, 0> Ug = m |g| y with y measured from the holder's height.
     """
     free = s.free
     K = float(np.sum(np.einsum("ij,ij->i", s.p[free], s.p[free]) / (2.0 * s.m[free])))
     _, mag = spring_vectors(s)
-    Us = float(np.sum(0.5 * s.k * (mag - s.L0) ** 2))
-    anchors = np.flatnonzero(s.fixed)
-    ref = s.pos[anchors[0]] if len(anchors) else np.zeros(3)
-    Ug = float(np.sum(-s.m[free] * ((s.pos[free] - ref) @ s.g)))
-    return Energies(K, Us, Ug)
+    Us = float(np.sum(_spring_energy(s.k, s.k3, mag - s.L0)))
+    Ug = float(np.sum(-s.m[free] * ((s.pos[free] - s.ref) @ s.g)))
+    return Energies(K, Us, Ug, s.E_thermal)
 
 
 @dataclass
 class Trajectory:
-    """States of one node at every step: t (n,), pos (n, 3), p (n, 3), energies (n, 3)."""
+    """One node at every step: t (n,), pos, p and acceleration a (n, 3), energies (n,)."""
 
     t: np.ndarray
     pos: np.ndarray
     p: np.ndarray
+    a: np.ndarray
     K: np.ndarray
     Us: np.ndarray
     Ug: np.ndarray
+    E_thermal: np.ndarray
+    L0: np.ndarray       # the node's first spring's relaxed length (changes when it yields)
 
     @property
     def E(self) -> np.ndarray:
+        """Mechanical energy K + Us + Ug."""
         return self.K + self.Us + self.Ug
+
+    @property
+    def total(self) -> np.ndarray:
+        return self.E + self.E_thermal
 
 
 def run(s: System, n_steps: int, node: int | None = None) -> Trajectory:
@@ -180,17 +365,24 @@ def run(s: System, n_steps: int, node: int | None = None) -> Trajectory:
     ``s`` is advanced in place.
     """
     node = int(s.free[0]) if node is None else node
+    spring = np.flatnonzero((s.i == node) | (s.j == node))
+    spring = int(spring[0]) if len(spring) else None
     rows = n_steps + 1
     t = np.empty(rows)
     pos = np.empty((rows, 3))
     p = np.empty((rows, 3))
-    en = np.empty((rows, 3))
+    a = np.empty((rows, 3))
+    en = np.empty((rows, 4))
+    L0 = np.full(rows, np.nan)
     for r in range(rows):
         if r:
             step(s)
         t[r] = s.t
         pos[r] = s.pos[node]
         p[r] = s.p[node]
+        a[r] = net_forces(s)[node] / s.m[node]
         e = energies(s)
-        en[r] = (e.K, e.Us, e.Ug)
-    return Trajectory(t, pos, p, en[:, 0], en[:, 1], en[:, 2])
+        en[r] = (e.K, e.Us, e.Ug, e.E_thermal)
+        if spring is not None:
+            L0[r] = s.L0[spring]
+    return Trajectory(t, pos, p, a, en[:, 0], en[:, 1], en[:, 2], en[:, 3], L0)

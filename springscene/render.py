@@ -19,7 +19,7 @@ from .errors import UserError
 from .outputs import (VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps,
                       write_png)
 
-CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E")
+CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E", "E_thermal")
 
 
 MAX_STEPS = 10_000_000    # about 3 minutes of stepping; past it a typo, not a plan
@@ -54,9 +54,13 @@ def simulate(cfg: Config, duration: float | None = None) -> physics.Trajectory:
 
 
 def write_csv(traj: physics.Trajectory, out: str | Path) -> Path:
-    """Write ``t,x,y,z,px,py,pz,K,Us,Ug,E`` rows, full float precision."""
+    """Write ``t,x,y,z,px,py,pz,K,Us,Ug,E,E_thermal`` rows, full float precision.
+
+    E = K + Us + Ug; E_thermal is the energy drag and permanent set have taken.
+    """
     out = check_output(out, (".csv",))
-    table = np.column_stack([traj.t, traj.pos, traj.p, traj.K, traj.Us, traj.Ug, traj.E])
+    table = np.column_stack([traj.t, traj.pos, traj.p, traj.K, traj.Us, traj.Ug, traj.E,
+                             traj.E_thermal])
     with atomic_path(out) as tmp, open(tmp, "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(CSV_HEADER)
@@ -96,7 +100,7 @@ class RenderStats:
 
 def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
                  fps: int | None = None, backend: str = "auto", antialias: bool = True,
-                 progress: bool = False) -> RenderStats:
+                 overlays: tuple[str, ...] = (), progress: bool = False) -> RenderStats:
     """Render the oscillation in real time (one video second per simulated second) to MP4 or GIF."""
     path = check_output(out, VIDEO_FORMATS)
     cfg = config.override(cfg, "render", duration=duration, fps=fps)

@@ -1,0 +1,216 @@
+"""The page's "experimental quantities", measured from a simulated trajectory, beside theory.
+
+:func:`analyze` simulates a config and measures, along the line of motion:
+
+- the equilibrium, where the simulated net force on the ball vanishes (a least-
+  squares fit of the acceleration against displacement and velocity);
+- the period, from interpolated upward crossings of equilibrium over all full
+  cycles; frequency and angular frequency from it;
+- the amplitude (largest displacement in the first period), the largest speed
+  and acceleration, and the oscillation energy about equilibrium (K + Us + Ug
+  minus their value at rest at equilibrium, averaged over the first period);
+- with damping: the decay rate from the logarithm of the successive peaks, and
+  the energy lost (the thermal energy tallied by the engine);
+- with a drive: the same over the steady state (the last half of the run).
+
+Theory comes from :mod:`springscene.theory`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from . import physics, render, theory
+from .config import Config
+
+KEYS = ("period", "frequency", "angular_frequency", "equilibrium_stretch", "amplitude",
+        "max_speed", "max_acceleration", "energy")
+DAMPED_KEYS = ("damping_rate", "energy_lost")
+UNITS = {"period": "s", "frequency": "Hz", "angular_frequency": "rad/s",
+         "equilibrium_stretch": "m", "amplitude": "m", "max_speed": "m/s",
+         "max_acceleration": "m/s^2", "energy": "J", "damping_rate": "1/s",
+         "energy_lost": "J"}
+
+
+def crossings(t: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """Interpolated times at which x crosses zero going up."""
+    idx = np.flatnonzero((x[:-1] < 0) & (x[1:] >= 0))
+    return t[idx] - x[idx] * (t[idx + 1] - t[idx]) / (x[idx + 1] - x[idx])
+
+
+def period_from_crossings(t: np.ndarray, x: np.ndarray) -> float | None:
+    """Mean period over all full cycles between the first and last upward crossing."""
+    tc = crossings(t, x)
+    if len(tc) < 2:
+        return None
+    return float((tc[-1] - tc[0]) / (len(tc) - 1))
+
+
+def peak_decay_rate(t: np.ndarray, x: np.ndarray) -> float | None:
+    """gamma from ln|x| at its successive extrema (both signs): ln|x_peak| = c - gamma t."""
+    ax = np.abs(x)
+    idx = np.flatnonzero((ax[1:-1] > ax[:-2]) & (ax[1:-1] >= ax[2:])) + 1
+    idx = idx[ax[idx] > 1e-6 * ax.max()]          # above round-off
+    if len(idx) < 3:      # not oscillating: fit the tail of |x| itself
+        tail = np.flatnonzero(ax > 1e-6 * ax.max())
+        tail = tail[len(tail) // 2:]
+        if len(tail) < 3:
+            return None
+        idx = tail
+    slope = np.polyfit(t[idx], np.log(ax[idx]), 1)[0]
+    return float(-slope)
+
+
+def _equilibrium(traj: physics.Trajectory, axis: np.ndarray, sel: slice, drive_w: float | None
+                 ) -> float:
+    """Position along ``axis`` where the fitted net force is zero: a = c + a1 y + a2 v (+ drive)."""
+    y = traj.pos[sel] @ axis
+    v = (traj.p[sel] @ axis)
+    a = traj.a[sel] @ axis
+    t = traj.t[sel]
+    cols = [np.ones_like(y), y, v]
+    if drive_w:
+        cols += [np.cos(drive_w * t), np.sin(drive_w * t)]
+    coef = np.linalg.lstsq(np.column_stack(cols), a, rcond=None)[0]
+    return float(-coef[0] / coef[1])
+
+
+def analyze(cfg: Config, duration: float | None = None) -> dict:
+    """Measured and theoretical quantities of the config's oscillation (SI units)."""
+    cfg = replace(cfg, render=replace(cfg.render,
+                                      duration=cfg.render.duration if duration is None else duration))
+    traj = render.simulate(cfg)
+    osc = theory.Oscillator.from_config(cfg)
+    axis = np.asarray(osc.axis)
+    m = cfg.ball.m
+    driven = cfg.driven
+    damped = cfg.damping.b > 0
+    n = len(traj.t)
+    sel = slice(_steady_start(cfg, osc, traj.t), None) if driven else slice(None)
+    drive_w = cfg.drive.omega if driven else None
+
+    y_eq = _equilibrium(traj, axis, sel, drive_w)
+    holder_y = float(np.dot(cfg.holder.pos, axis))
+    x = traj.pos @ axis - y_eq
+    v = traj.p @ axis / m
+    t = traj.t
+    T = period_from_crossings(t[sel], x[sel])
+
+    # energy about equilibrium: the engine's own energies, minus those at rest at equilibrium
+    rest = cfg.system()
+    rest.pos[1] = np.asarray(cfg.holder.pos) + axis * (y_eq - holder_y)
+    rest.p[:] = 0.0
+    rest.L0[:] = traj.L0[-1]
+    E_rest = physics.energies(rest).E
+    E_osc = traj.E - E_rest
+
+    measured: dict[str, float | None] = {
+        "period": T,
+        "frequency": 1 / T if T else None,
+        "angular_frequency": 2 * math.pi / T if T else None,
+        "equilibrium_stretch": float(holder_y - y_eq - traj.L0[-1]),
+    }
+    t_th = np.linspace(0.0, t[-1], 20 * (n - 1) + 1)
+    if driven:
+        F0 = theory.drive_force_amplitude(cfg) * float(np.dot(
+            np.asarray(cfg.drive.direction) / np.linalg.norm(cfg.drive.direction), axis))
+        w = cfg.drive.omega
+        A = float(abs(theory.steady_amplitude(w, osc.omega0, osc.gamma, F0, m)))
+        xs = x[sel]
+        measured.update(amplitude=float((xs.max() - xs.min()) / 2),
+                        max_speed=float(np.abs(v[sel]).max()),
+                        max_acceleration=float(np.abs(traj.a[sel] @ axis).max()),
+                        energy=float(E_osc[sel].mean()))
+        # mean of 1/2 m v^2 + 1/2 k (x - y_holder)^2 over a cycle, x lagging the drive by delta
+        delta = math.atan2(2 * osc.gamma * w, osc.omega0 ** 2 - w ** 2)
+        As = cfg.drive.amplitude if cfg.drive.type == "support" else 0.0
+        th = {"period": 2 * math.pi / w, "amplitude": A, "max_speed": A * w,
+              "max_acceleration": A * w * w,
+              "energy": 0.25 * m * (A * w) ** 2
+              + 0.25 * cfg.spring.k * abs(A * complex(math.cos(delta), -math.sin(delta)) - As) ** 2}
+    else:
+        first = t <= (T if T else t[-1])
+        xt, vt = osc._xv(t_th)
+        at = -osc.omega0 ** 2 * xt - 2 * osc.gamma * vt
+        first_th = t_th <= osc.period
+        measured.update(amplitude=float(np.abs(x[first]).max()),
+                        max_speed=float(np.linalg.norm(traj.p, axis=1).max() / m),
+                        max_acceleration=float(np.linalg.norm(traj.a, axis=1).max()),
+                        energy=float(E_osc[first].mean()))
+        th = {"period": osc.period, "amplitude": float(np.abs(xt[first_th]).max()),
+              "max_speed": float(np.abs(vt).max()), "max_acceleration": float(np.abs(at).max()),
+              "energy": osc.energy if not damped else float(
+                  osc.mechanical_energy(t_th[first_th]).mean())}
+    theory_: dict[str, float | None] = {
+        "period": th["period"] if math.isfinite(th["period"]) else None,
+        "equilibrium_stretch": osc.equilibrium_stretch,
+        **{k: th[k] for k in ("amplitude", "max_speed", "max_acceleration", "energy")},
+    }
+    P = theory_["period"]
+    theory_["frequency"] = 1 / P if P else None
+    theory_["angular_frequency"] = 2 * math.pi / P if P else None
+
+    if damped:
+        if driven:
+            # over the steady state the drag dissipates 1/2 b (A w)^2 on average
+            measured["damping_rate"] = _fit_gamma(traj, axis, sel, drive_w, m)
+            theory_["damping_rate"] = osc.gamma
+            window = t[-1] - t[sel][0]
+            measured["energy_lost"] = float(traj.E_thermal[-1] - traj.E_thermal[sel][0])
+            theory_["energy_lost"] = 0.5 * cfg.damping.b * (th["max_speed"]) ** 2 * window
+        else:
+            measured["damping_rate"] = peak_decay_rate(t, x)
+            # a motion that does not oscillate: the same fit of ln|x| on the closed form
+            theory_["damping_rate"] = (osc.decay_rate if osc.omega_d > 0
+                                       else peak_decay_rate(t, osc.x(t)))
+            measured["energy_lost"] = float(traj.E_thermal[-1])
+            theory_["energy_lost"] = float(osc.energy - osc.mechanical_energy(t[-1]))
+
+    keys = KEYS + (DAMPED_KEYS if damped else ())
+    return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
+            "duration": float(t[-1]), "regime": osc.regime if not driven else "driven",
+            "measured": {k: measured.get(k) for k in keys},
+            "theory": {k: theory_.get(k) for k in keys}}
+
+
+SETTLED = 1e-3    # the transient has decayed to this fraction of its start
+
+
+def _steady_start(cfg: Config, osc: theory.Oscillator, t: np.ndarray) -> int:
+    """First step of the steady state: when e^(-gamma t) < SETTLED, but at least
+    five drive periods before the end and no earlier than half way."""
+    end = t[-1]
+    settle = -math.log(SETTLED) / osc.gamma if osc.gamma > 0 else end / 2
+    start = max(end / 2, min(settle, end - 5 * 2 * math.pi / cfg.drive.omega))
+    return int(np.searchsorted(t, start))
+
+
+def _fit_gamma(traj, axis, sel, drive_w, m) -> float:
+    """gamma from the fit a = c + a1 y + a2 v + drive terms: a2 = -2 gamma."""
+    y = traj.pos[sel] @ axis
+    v = traj.p[sel] @ axis / m
+    a = traj.a[sel] @ axis
+    t = traj.t[sel]
+    X = np.column_stack([np.ones_like(y), y, v, np.cos(drive_w * t), np.sin(drive_w * t)])
+    return float(-np.linalg.lstsq(X, a, rcond=None)[0][2] / 2)
+
+
+def table(result: dict) -> str:
+    """A readable terminal table: quantity, measured, theory, difference."""
+    lines = [f"{result['config']}: {result['regime']}, {result['integrator']}, "
+             f"dt = {result['dt']:g} s, {result['duration']:g} s simulated",
+             f"{'quantity':<22}{'measured':>14}{'theory':>14}{'difference':>12}  unit"]
+    for key, meas in result["measured"].items():
+        th = result["theory"][key]
+        diff = ""
+        if meas is not None and th:
+            diff = f"{100 * (meas - th) / abs(th):+.3f} %"
+        lines.append(f"{key:<22}{_num(meas):>14}{_num(th):>14}{diff:>12}  {UNITS[key]}")
+    return "\n".join(lines)
+
+
+def _num(x: float | None) -> str:
+    return "—" if x is None else f"{x:.6g}"
