@@ -156,6 +156,9 @@ def main(argv: list[str] | None = None) -> int:
     except UserError as exc:
         print(f"springscene: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except BrokenPipeError:          # e.g. `springscene analyze ... | head`
+        sys.stderr.close()
+        return 0
     except KeyboardInterrupt:
         print("springscene: interrupted", file=sys.stderr)
         return 130

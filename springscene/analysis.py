@@ -32,7 +32,7 @@ DAMPED_KEYS = ("damping_rate", "energy_lost")
 UNITS = {"period": "s", "frequency": "Hz", "angular_frequency": "rad/s",
          "equilibrium_stretch": "m", "amplitude": "m", "max_speed": "m/s",
          "max_acceleration": "m/s^2", "energy": "J", "damping_rate": "1/s",
-         "energy_lost": "J"}
+         "energy_lost": "J", "permanent_set": "m"}
 
 
 def crossings(t: np.ndarray, x: np.ndarray) -> np.ndarray:
@@ -88,7 +88,19 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     m = cfg.ball.m
     driven = cfg.driven
     damped = cfg.damping.b > 0
-    n = len(traj.t)
+    plastic = bool(np.any(traj.L0 != traj.L0[0]))
+    extra_measured, extra_theory = {}, {}
+    if plastic:
+        # the spring took a permanent set: measure the motion after it, about the new
+        # equilibrium; theory (perfect plasticity) starts it at rest at the elastic limit
+        s_y, s_eq = cfg.spring.yield_stretch, osc.equilibrium_stretch
+        extra_measured["permanent_set"] = float(traj.L0[-1] - traj.L0[0])
+        extra_theory["permanent_set"] = theory.permanent_set(osc, s_y)
+        i_set = int(np.flatnonzero(np.diff(traj.L0))[-1]) + 1
+        traj = _after(traj, i_set)
+        shift = axis * (extra_theory["permanent_set"] or 0.0)
+        osc = replace(osc, L0=float(traj.L0[-1]), x0=-(s_y - s_eq), v0=0.0,
+                      equilibrium=tuple(np.asarray(osc.equilibrium) - shift))
     sel = slice(_steady_start(cfg, osc, traj.t), None) if driven else slice(None)
     drive_w = cfg.drive.omega if driven else None
 
@@ -113,6 +125,7 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
         "angular_frequency": 2 * math.pi / T if T else None,
         "equilibrium_stretch": float(holder_y - y_eq - traj.L0[-1]),
     }
+    n = len(t)
     t_th = np.linspace(0.0, t[-1], 20 * (n - 1) + 1)
     if driven:
         F0 = theory.drive_force_amplitude(cfg) * float(np.dot(
@@ -169,11 +182,29 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
             measured["energy_lost"] = float(traj.E_thermal[-1])
             theory_["energy_lost"] = float(osc.energy - osc.mechanical_energy(t[-1]))
 
-    keys = KEYS + (DAMPED_KEYS if damped else ())
+    measured.update(extra_measured)
+    theory_.update(extra_theory)
+    keys = KEYS + (DAMPED_KEYS if damped else ()) + tuple(extra_measured)
+    regime = "driven" if driven else osc.regime
+    if plastic:
+        regime += f", after a permanent set at t = {t_set_total(traj):.3g} s"
     return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
-            "duration": float(t[-1]), "regime": osc.regime if not driven else "driven",
+            "duration": float(traj.t[-1] + traj.t0), "regime": regime,
             "measured": {k: measured.get(k) for k in keys},
             "theory": {k: theory_.get(k) for k in keys}}
+
+
+def t_set_total(traj: physics.Trajectory) -> float:
+    return float(traj.t0)
+
+
+def _after(traj: physics.Trajectory, i: int) -> physics.Trajectory:
+    """The trajectory from row i on, its clock restarted at 0 (``t0`` keeps the offset)."""
+    part = physics.Trajectory(traj.t[i:] - traj.t[i], traj.pos[i:], traj.p[i:], traj.a[i:],
+                              traj.K[i:], traj.Us[i:], traj.Ug[i:],
+                              traj.E_thermal[i:] - traj.E_thermal[i], traj.L0[i:])
+    part.t0 = float(traj.t[i])
+    return part
 
 
 SETTLED = 1e-3    # the transient has decayed to this fraction of its start

@@ -190,6 +190,10 @@ class System:
     def is_plastic(self) -> bool:
         return bool(np.any(np.isfinite(self.yield_stretch)))
 
+    @property
+    def stiffens(self) -> bool:
+        return bool(np.any(self.k3))
+
 
 def spring_vectors(s: System, pos: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Return ``L = pos[j] - pos[i]`` (S, 3) and ``mag(L)`` (S,), as VPython computes them."""
@@ -199,22 +203,27 @@ def spring_vectors(s: System, pos: np.ndarray | None = None) -> tuple[np.ndarray
     return L, mag
 
 
-def forces(s: System, pos: np.ndarray, t: float) -> np.ndarray:
+def forces(s: System, pos: np.ndarray, t: float,
+           flags: tuple[bool, bool] | None = None) -> np.ndarray:
     """Net force without drag on every node (N, 3) at positions ``pos`` and time ``t``.
 
     Springs, gravity and the drive; drag ``-b p/m`` is left to the integrator
     (see :mod:`springscene.integrators`). For one spring this is
     ``(-k*(mag(L)-L0)) * (L/mag(L)) + m*g`` on the ball, the page's ``Fs + Fg``
-    to the last bit. Fixed nodes get zero.
+    to the last bit. Fixed nodes get zero. ``flags`` = (plastic, stiffens) when the
+    caller already knows them (the step loop does).
     """
     drive = s.drive
     if drive is not None and drive.kind == "support":
         pos = pos.copy()
         pos[drive.nodes] = drive.base + drive.offsets(t)
     L, mag = spring_vectors(s, pos)
+    plastic, stiffens = flags if flags is not None else (s.is_plastic, s.stiffens)
     stretch = mag - s.L0
+    if plastic:          # elastic-perfectly-plastic: the force never exceeds its value at the limit
+        stretch = np.clip(stretch, -s.yield_stretch, s.yield_stretch)
     coef = -s.k * stretch
-    if s.k3.any():
+    if stiffens:
         coef = coef - s.k3 * stretch ** 3
     Fs = coef[:, None] * (L / mag[:, None])
     n = s.n_nodes
@@ -263,8 +272,10 @@ def step(s: System, n: int = 1) -> System:
     plastic = s.is_plastic
     beta = (s.b / s.m)[:, None] if s.has_drag else None
 
+    flags = (plastic, s.stiffens)
+
     def f(pos, t):
-        return forces(s, pos, t)
+        return forces(s, pos, t, flags)
 
     for _ in range(n):
         pos, p, heat = advance(s.pos, s.p, m, s.t, s.dt, f, beta)
@@ -348,6 +359,7 @@ class Trajectory:
     Ug: np.ndarray
     E_thermal: np.ndarray
     L0: np.ndarray       # the node's first spring's relaxed length (changes when it yields)
+    t0: float = 0.0      # time of the first row when the clock was restarted
 
     @property
     def E(self) -> np.ndarray:

@@ -162,3 +162,36 @@ def steady_amplitude(omega, omega0: float, gamma: float, F0: float, m: float) ->
     """A(omega) = (F0/m) / sqrt((omega0^2 - omega^2)^2 + (2 gamma omega)^2)."""
     w = np.asarray(omega, float)
     return (F0 / m) / np.sqrt((omega0 ** 2 - w ** 2) ** 2 + (2 * gamma * w) ** 2)
+
+
+def permanent_set(osc: Oscillator, yield_stretch: float) -> float | None:
+    """How much L0 grows when the motion first stretches the spring past its elastic limit.
+
+    Perfect plasticity: elastic until the stretch reaches ``yield_stretch`` (the
+    closed form gives the speed v_y there), then the spring force stays at
+    k s_y, so the ball slows under a constant net force m a = k s_y - m g and
+    the drag -b v: it travels d = v_y/beta - (a/beta^2) ln(1 + beta v_y/a)
+    (beta = b/m; d = v_y^2 / 2a without drag) before it stops, and L0 grows by d.
+    None when the limit is below the weight's own stretch (the spring never holds).
+    """
+    s_eq = osc.equilibrium_stretch
+    a = (osc.k * yield_stretch - osc.m * osc.g) / osc.m
+    if a <= 0:
+        return None
+    t = np.linspace(0.0, 4 * math.pi / osc.omega0, 400_001)
+    x = osc.x(t)
+    reach = np.flatnonzero(s_eq - x >= yield_stretch)    # stretch = s_eq - x along the axis
+    if not len(reach):
+        return 0.0
+    i = int(reach[0])
+    if i == 0:
+        v_y = abs(osc.v0)
+    else:   # interpolate the crossing
+        x_y = s_eq - yield_stretch
+        f = (x[i - 1] - x_y) / (x[i - 1] - x[i])
+        v = osc.v(t[i - 1:i + 1])
+        v_y = abs(v[0] + f * (v[1] - v[0]))
+    beta = osc.b / osc.m
+    if beta == 0:
+        return v_y ** 2 / (2 * a)
+    return v_y / beta - (a / beta ** 2) * math.log1p(beta * v_y / a)
