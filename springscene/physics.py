@@ -27,8 +27,9 @@ Beyond Hooke's law (all off by default):
   tallied in ``E_thermal``;
 - a stiffening term: ``F = -(k s + k3 s^3)`` along the spring, s = |L| - L0;
 - an elastic limit: stretched (or compressed) beyond ``yield_stretch`` a spring
-  takes a permanent set, L0 moves so that |s| = yield_stretch, and the elastic
-  energy released goes to ``E_thermal`` (plastic work heats the metal);
+  takes a permanent set (elastic-perfectly-plastic: its force stays at its value
+  at the limit while L0 moves so that |s| = yield_stretch), and the work of that
+  flow goes to ``E_thermal`` (plastic work heats the metal);
 - a :class:`Drive`: driven support nodes moving as ``A sin(omega t)``, or an
   external force ``F0 cos(omega t)`` on chosen nodes.
 """
@@ -293,19 +294,20 @@ def step(s: System, n: int = 1) -> System:
 def _yield(s: System) -> None:
     """Permanent set: a spring stretched beyond its limit gets a longer (or shorter) L0.
 
-    The elastic energy released, Us(old L0) - Us(new L0) at the same length,
-    goes to ``E_thermal``.
+    While it flows the spring pulls with its force at the limit, F_y = k s_y + k3 s_y^3
+    (:func:`forces` caps it there), so the work the flow turns into heat is
+    F_y |delta L0|; it goes to ``E_thermal``.
     """
     _, mag = spring_vectors(s)
     stretch = mag - s.L0
     over = np.abs(stretch) > s.yield_stretch
     if not over.any():
         return
-    before = _spring_energy(s.k[over], s.k3[over], stretch[over])
-    limit = np.sign(stretch[over]) * s.yield_stretch[over]
-    s.L0[over] = mag[over] - limit
-    after = _spring_energy(s.k[over], s.k3[over], limit)
-    s.E_thermal += float(np.sum(before - after))
+    s_y = s.yield_stretch[over]
+    new_L0 = mag[over] - np.sign(stretch[over]) * s_y
+    F_y = s.k[over] * s_y + s.k3[over] * s_y ** 3
+    s.E_thermal += float(np.sum(F_y * np.abs(new_L0 - s.L0[over])))
+    s.L0[over] = new_L0
 
 
 def _spring_energy(k, k3, stretch):
