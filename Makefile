@@ -36,6 +36,7 @@ test: setup
 
 bench: setup
 	$(BIN)/python benchmarks/bench_render.py
+	$(BIN)/python benchmarks/bench_physics.py
 
 baselines: setup
 	$(BIN)/python -m pytest tests/test_render.py -k baseline --regen-baselines
