@@ -111,7 +111,7 @@ def _run(args: argparse.Namespace) -> int:
     elif args.command == "analyze":
         from springscene import analysis
 
-        result = analysis.analyze(config.override(cfg, "render", duration=args.duration))
+        result = analysis.analyze(cfg, args.duration)
         if args.json:
             print(json.dumps({"measured": result["measured"], "theory": result["theory"],
                               "regime": result["regime"], "integrator": result["integrator"],

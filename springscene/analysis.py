@@ -23,8 +23,9 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import physics, render, theory
+from . import config, physics, render, theory
 from .config import Config
+from .errors import UserError
 
 KEYS = ("period", "frequency", "angular_frequency", "equilibrium_stretch", "amplitude",
         "max_speed", "max_acceleration", "energy")
@@ -80,10 +81,14 @@ def _equilibrium(traj: physics.Trajectory, axis: np.ndarray, sel: slice, drive_w
 
 def analyze(cfg: Config, duration: float | None = None) -> dict:
     """Measured and theoretical quantities of the config's oscillation (SI units)."""
-    cfg = replace(cfg, render=replace(cfg.render,
-                                      duration=cfg.render.duration if duration is None else duration))
-    traj = render.simulate(cfg)
+    cfg = config.override(cfg, "render", duration=duration)
     osc = theory.Oscillator.from_config(cfg)
+    need = _needed_duration(cfg, osc)
+    if cfg.render.duration < need:
+        where = "--duration" if duration is not None else f"{cfg.source}: [render] duration"
+        raise UserError(f"{where} {cfg.render.duration:g} s is too short to analyze: it needs "
+                        f"at least {need:.3g} s ({_why_needed(cfg, osc)})")
+    traj = render.simulate(cfg)
     axis = np.asarray(osc.axis)
     m = cfg.ball.m
     driven = cfg.driven
@@ -205,6 +210,23 @@ def _after(traj: physics.Trajectory, i: int) -> physics.Trajectory:
                               traj.E_thermal[i:] - traj.E_thermal[i], traj.L0[i:])
     part.t0 = float(traj.t[i])
     return part
+
+
+def _needed_duration(cfg: Config, osc: theory.Oscillator) -> float:
+    if cfg.driven:
+        settle = -math.log(SETTLED) / osc.gamma if osc.gamma > 0 else 0.0
+        return settle + 5 * 2 * math.pi / cfg.drive.omega
+    if osc.omega_d > 0:
+        return 2.5 * osc.period
+    return 5 / osc.decay_rate
+
+
+def _why_needed(cfg: Config, osc: theory.Oscillator) -> str:
+    if cfg.driven:
+        return "the transient must decay to 1e-3 and five drive periods follow"
+    if osc.omega_d > 0:
+        return "two full periods and a half"
+    return "five decay times"
 
 
 SETTLED = 1e-3    # the transient has decayed to this fraction of its start

@@ -344,3 +344,15 @@ def test_sweep_needs_drive_and_damping(tmp_path):
     assert proc.returncode == 2 and "needs a [drive] section" in proc.stderr
     with pytest.raises(UserError, match=r"\[damping\] b > 0"):
         sweep.check_sweepable(config.override(config.load(DRIVEN), "damping", b=0.0))
+
+
+@pytest.mark.parametrize("config_path, duration, words", [
+    (WIKI, "0.3", "--duration 0.3 s is too short to analyze: it needs at least 1.28 s"),
+    (DRIVEN, "5", "--duration 5 s is too short to analyze"),
+    (WIKI, "-1", "--duration must be >= 0"),
+])
+def test_analyze_refuses_too_short_runs(config_path, duration, words):
+    proc = run_cli("analyze", config_path, "--duration", duration)
+    assert proc.returncode == 2
+    line, = proc.stderr.strip().splitlines()
+    assert words in line
