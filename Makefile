@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render test bench baselines clean system-deps
+.PHONY: setup render figures test bench baselines clean system-deps
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -31,6 +31,9 @@ render: setup
 	$(BIN)/springscene render $(WIKI) --out renders/wiki/oscillation.mp4
 	$(BIN)/springscene still $(WIKI) --time 0 --out renders/wiki/still.png
 
+figures: setup
+	$(BIN)/springscene figures $(WIKI) --out renders/wiki/
+
 test: setup
 	$(BIN)/python -m pytest
 
@@ -39,7 +42,7 @@ bench: setup
 	$(BIN)/python benchmarks/bench_physics.py
 
 baselines: setup
-	$(BIN)/python -m pytest tests/test_render.py -k baseline --regen-baselines
+	$(BIN)/python -m pytest tests/test_render.py tests/test_figures.py tests/test_overlay.py --regen-baselines
 
 clean:
-	rm -rf $(VENV) renders/wiki build *.egg-info
+	rm -rf $(VENV) build *.egg-info renders/wiki/oscillation.mp4 renders/wiki/still.png
