@@ -101,7 +101,12 @@ class RenderStats:
 def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
                  fps: int | None = None, backend: str = "auto", antialias: bool = True,
                  overlays: tuple[str, ...] = (), progress: bool = False) -> RenderStats:
-    """Render the oscillation in real time (one video second per simulated second) to MP4 or GIF."""
+    """Render the oscillation in real time (one video second per simulated second) to MP4 or GIF.
+
+    ``overlays`` (names from :data:`springscene.overlay.OVERLAYS`) add a clock in the
+    scene, a y(t) graph below it and energy bars beside it; the scene keeps its size
+    and the video grows around it (:class:`springscene.overlay.Overlays`).
+    """
     path = check_output(out, VIDEO_FORMATS)
     cfg = config.override(cfg, "render", duration=duration, fps=fps)
     duration, fps = cfg.render.duration, cfg.render.fps
@@ -111,18 +116,22 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     check_video_fps(path, fps)
     from tqdm import tqdm
 
+    from .overlay import Overlays
     from .scene import Scene
 
     system = cfg.system()
     start = time.perf_counter()
+    # graph and energy panels pre-run the same (deterministic) system to fix their axes
+    panels = Overlays(cfg, overlays)
     with Scene(cfg, system, antialias=antialias, backend_name=backend) as scene, \
             atomic_path(path) as tmp:
-        with VideoWriter(tmp, fps, (cfg.scene.width, cfg.scene.height)) as writer:
+        with VideoWriter(tmp, fps, panels.size) as writer:
             loop_start = time.perf_counter()
             for target in tqdm(steps, desc=path.name, unit="frame", disable=not progress,
                                leave=False):
                 physics.step(system, int(target) - system.steps)
                 scene.update(system)
-                writer.write(scene.frame())
+                panels.update_scene(scene, system)
+                writer.write(panels.compose(scene.frame(), system))
         end = time.perf_counter()
     return RenderStats(path, len(steps), fps, time.perf_counter() - start, end - loop_start)

@@ -175,6 +175,32 @@ class Scene:
         img = vtk_to_numpy(self._pixels).reshape(h, w, 3)
         return np.ascontiguousarray(img[::-1])
 
+    _clock = None            # the clock's text actor, added by the first set_clock()
+    CLOCK_FONT_SIZE = 20     # px, a little smaller than the title
+    CLOCK_MARGIN = 12        # px from the top and left edges
+
+    def set_clock(self, text: str) -> None:
+        """Show ``text`` (e.g. ``t = 1.23 s``) in the top-left corner from the next frame on.
+
+        The text actor is added on the first call (black on a light background, white
+        on a dark one, as the title); later calls only change its text.
+        """
+        if self._clock is None:
+            from vtkmodules.vtkRenderingCore import vtkTextActor
+
+            luminance = float(np.dot(self.cfg.scene.background, (0.2126, 0.7152, 0.0722)))
+            actor = vtkTextActor()
+            prop = actor.GetTextProperty()
+            prop.SetFontFamilyToArial()
+            prop.SetFontSize(self.CLOCK_FONT_SIZE)
+            prop.SetColor((0.0,) * 3 if luminance > 0.5 else (1.0,) * 3)
+            prop.SetJustificationToLeft()
+            prop.SetVerticalJustificationToTop()
+            actor.SetPosition(self.CLOCK_MARGIN, self.cfg.scene.height - self.CLOCK_MARGIN)
+            self.plotter.renderer.AddViewProp(actor)
+            self._clock = actor
+        self._clock.SetInput(str(text))
+
     @property
     def ball_actors(self) -> list:
         return [actor for _, actor in self._balls]
