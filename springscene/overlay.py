@@ -173,6 +173,10 @@ class EnergyPanel(_Panel):
     """Bars of K, Us, Ug, thermal and total energy (J), as PhET's Masses and Springs.
 
     The y axis is fixed from the pre-run ``traj`` (every bar's whole range, and 0).
+    As PhET does with its movable reference line, Ug is measured from the ball's
+    lowest point in the run (the engine's Ug is zero at the holder), so every bar of
+    a free oscillation is positive and K's share of the total is visible; the total
+    is K + Us + Ug + thermal with that zero.
     """
 
     def __init__(self, height: int, traj, width: int = ENERGY_WIDTH) -> None:
@@ -192,21 +196,27 @@ class EnergyPanel(_Panel):
                                        edgecolors="none", animated=True)
             ax.add_collection(self.bars, autolim=False)
             ax.set_xlim(-0.5, len(x) - 0.5)
-            ax.set_ylim(*_limits([traj.K, traj.Us, traj.Ug, traj.E_thermal, traj.total],
-                                 include=(0.0,)))
+            self.ug_zero = float(np.min(traj.Ug))
+            ax.set_ylim(*_limits(self.values(traj), include=(0.0,)))
             ax.set_xticks(x, labels, fontsize=FONT_SIZE - 1)
             ax.axhline(0.0, color="black", linewidth=1.0)
             ax.set_title("energy (J)", fontsize=FONT_SIZE, pad=6)
+            ax.set_xlabel("$U_g$ = 0 at the lowest point", fontsize=FONT_SIZE - 2)
             ax.grid(True, axis="y", color="0.88", linewidth=0.8)
             ax.set_axisbelow(True)
             ax.tick_params(axis="x", length=0)
             self.ax = ax
             self._freeze(ax)
 
+    def values(self, e) -> tuple:
+        """(K, Us, Ug, thermal, total) as drawn, from Energies or a Trajectory's arrays."""
+        ug = e.Ug - self.ug_zero
+        return (e.K, e.Us, ug, e.E_thermal, e.K + e.Us + ug + e.E_thermal)
+
     def draw(self, e) -> np.ndarray:
         """The bars at :class:`~springscene.physics.Energies` ``e``: the RGBA pixels of
         :attr:`region`."""
-        self._verts[:, 2:, 1] = np.array((e.K, e.Us, e.Ug, e.E_thermal, e.total))[:, None]
+        self._verts[:, 2:, 1] = np.array(self.values(e))[:, None]
         self.bars.set_verts(self._verts)       # from 0 up to the value (down when negative)
         return self._blit((self.bars,))
 

@@ -73,6 +73,7 @@ class Scene:
 
         # holders: boxes centred on the fixed nodes
         self._holder_bounds = []
+        self._holders = []          # (node, actor, rest position): driven supports move
         for node in np.flatnonzero(system.fixed):
             c = system.pos[node]
             half = np.asarray(cfg.holder.size) / 2
@@ -81,6 +82,7 @@ class Scene:
             _material(actor, cfg.holder.color)
             actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
             self._holder_bounds.append(np.stack([c - half, c + half]))
+            self._holders.append((int(node), actor, c.copy()))
 
         # balls: one sphere mesh, moved by its actor's position
         self._balls = []
@@ -124,6 +126,9 @@ class Scene:
         """Move balls and redraw springs along ``pos[j] - pos[i]`` (``spring.axis = ball.pos - holder.pos``)."""
         for node, actor in self._balls:
             actor.SetPosition(*system.pos[node])
+        if system.drive is not None and system.drive.kind == "support":
+            for node, actor, rest in self._holders:       # the driven holder moves
+                actor.SetPosition(*(system.pos[node] - rest))
         for i, j, tube, frame, mesh, _ in self._springs:
             axis = system.pos[j] - system.pos[i]
             pts, normals = tube.points(system.pos[i], axis, frame.set_axis(axis))
@@ -136,7 +141,8 @@ class Scene:
     def object_bounds(self, system: System) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
         r = self.cfg.ball.radius
-        b = list(self._holder_bounds)
+        b = [bounds + (system.pos[node] - rest)
+             for bounds, (node, _, rest) in zip(self._holder_bounds, self._holders)]
         b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]
         for *_, mesh, _ in self._springs:
             x0, x1, y0, y1, z0, z1 = mesh.bounds

@@ -151,7 +151,7 @@ def bar_heights(panel: np.ndarray, energy) -> dict[str, int]:
 def expected_heights(energy, e) -> dict[str, float]:
     ax = energy.ax
     zero = ax.transData.transform((0, 0))[1]
-    values = (e.K, e.Us, e.Ug, e.E_thermal, e.total)
+    values = energy.values(e)
     return {label: abs(ax.transData.transform((0, v))[1] - zero)
             for (label, _), v in zip(ENERGY_BARS, values)}
 
@@ -201,7 +201,7 @@ def test_energy_bars_follow_the_energies(videos, layout, cfg):
     for f, s in zip((0, 3, 5), states(cfg, (0, 3, 5))):
         got = bar_heights(frames[f][:, W:], e)
         want = expected_heights(e, physics.energies(s))
-        for label in ("$U_s$", "$U_g$", "total"):
+        for label in ("K", "$U_s$", "$U_g$", "total"):
             assert got[label] == pytest.approx(want[label], abs=3), label
         seen.append(got)
     for label in ("$U_s$", "$U_g$"):

@@ -188,3 +188,22 @@ def test_frame_times_are_whole_steps_in_real_time():
     assert len(steps) == 500 and steps[0] == 0 and steps[-1] == 998
     assert np.all(np.diff(steps) == 2)
     assert math.isclose(len(steps) / 50, 10.0)
+
+
+def test_driven_holder_moves_with_its_support():
+    """A driven support's box follows the support node; the spring still starts there."""
+    from springscene.scene import Scene
+
+    cfg = config.override(config.load(WIKI.parent / "driven.toml"), "drive", amplitude=0.03,
+                          omega=3.0)
+    s = cfg.system()
+    with Scene(cfg, s, antialias=False) as sc:
+        physics.step(s, 52)
+        sc.update(s)
+        holder = sc.plotter.renderer.actors
+        offset = s.pos[0] - np.asarray(cfg.holder.pos)
+        assert offset[1] == pytest.approx(0.03 * math.sin(3.0 * 0.52))
+        boxes = [a for a in holder.values() if np.allclose(a.GetPosition(), offset)]
+        assert len(boxes) == 1
+        rings = np.asarray(sc.spring_meshes[0].points).reshape(-1, 16, 3).mean(axis=1)
+        assert np.allclose(rings[0], s.pos[0], atol=1e-12)
