@@ -27,6 +27,7 @@ from . import config, physics, render, theory
 from .config import Config
 from .errors import UserError
 
+MIN_STEPS_PER_PERIOD = 12
 KEYS = ("period", "frequency", "angular_frequency", "equilibrium_stretch", "amplitude",
         "max_speed", "max_acceleration", "energy")
 DAMPED_KEYS = ("damping_rate", "energy_lost")
@@ -65,17 +66,12 @@ def peak_decay_rate(t: np.ndarray, x: np.ndarray) -> float | None:
     return float(-slope)
 
 
-def _equilibrium(traj: physics.Trajectory, axis: np.ndarray, sel: slice, drive_w: float | None
-                 ) -> float:
-    """Position along ``axis`` where the fitted net force is zero: a = c + a1 y + a2 v (+ drive)."""
-    y = traj.pos[sel] @ axis
-    v = (traj.p[sel] @ axis)
-    a = traj.a[sel] @ axis
-    t = traj.t[sel]
-    cols = [np.ones_like(y), y, v]
-    if drive_w:
-        cols += [np.cos(drive_w * t), np.sin(drive_w * t)]
-    coef = np.linalg.lstsq(np.column_stack(cols), a, rcond=None)[0]
+def _equilibrium(traj: physics.Trajectory, axis: np.ndarray) -> float:
+    """Position along ``axis`` where the fitted net force is zero: a = c + a1 y + a2 v."""
+    y = traj.pos @ axis
+    v = traj.p @ axis
+    a = traj.a @ axis
+    coef = np.linalg.lstsq(np.column_stack([np.ones_like(y), y, v]), a, rcond=None)[0]
     return float(-coef[0] / coef[1])
 
 
@@ -83,6 +79,14 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     """Measured and theoretical quantities of the config's oscillation (SI units)."""
     cfg = config.override(cfg, "render", duration=duration)
     osc = theory.Oscillator.from_config(cfg)
+    if cfg.driven:
+        from .sweep import check_sweepable
+
+        check_sweepable(cfg, "analyze")
+    if osc.omega_d > 0 and osc.period / cfg.physics.dt < MIN_STEPS_PER_PERIOD:
+        raise UserError(f"{cfg.source}: dt = {cfg.physics.dt:g} s (--dt or [physics] dt) gives {osc.period / cfg.physics.dt:.3g} steps "
+                        f"a period: analyze needs at least {MIN_STEPS_PER_PERIOD} to measure; "
+                        f"use dt <= {osc.period / MIN_STEPS_PER_PERIOD:.3g} s")
     need = _needed_duration(cfg, osc)
     if cfg.render.duration < need:
         where = "--duration" if duration is not None else f"{cfg.source}: [render] duration"
@@ -107,9 +111,9 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
         osc = replace(osc, L0=float(traj.L0[-1]), x0=-(s_y - s_eq), v0=0.0,
                       equilibrium=tuple(np.asarray(osc.equilibrium) - shift))
     sel = slice(_steady_start(cfg, osc, traj.t), None) if driven else slice(None)
-    drive_w = cfg.drive.omega if driven else None
-
-    y_eq = _equilibrium(traj, axis, sel, drive_w)
+    # driven: the mean over whole drive periods of the steady state (the response is a
+    # sinusoid at the drive's frequency there, so a force fit could not tell it apart)
+    y_eq = float(np.mean(traj.pos[sel][:-1] @ axis)) if driven else _equilibrium(traj, axis)
     holder_y = float(np.dot(cfg.holder.pos, axis))
     x = traj.pos @ axis - y_eq
     v = traj.p @ axis / m
@@ -144,7 +148,7 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
                         energy=float(E_osc[sel].mean()))
         # mean of 1/2 m v^2 + 1/2 k (x - y_holder)^2 over a cycle, x lagging the drive by delta
         delta = math.atan2(2 * osc.gamma * w, osc.omega0 ** 2 - w ** 2)
-        As = cfg.drive.amplitude if cfg.drive.type == "support" else 0.0
+        As = cfg.drive.amplitude if cfg.drive.type == "support" else 0.0   # along the axis
         th = {"period": 2 * math.pi / w, "amplitude": A, "max_speed": A * w,
               "max_acceleration": A * w * w,
               "energy": 0.25 * m * (A * w) ** 2
@@ -174,7 +178,11 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     if damped:
         if driven:
             # over the steady state the drag dissipates 1/2 b (A w)^2 on average
-            measured["damping_rate"] = _fit_gamma(traj, axis, sel, drive_w, m)
+            # the drag's power b <v^2> is what the engine tallied as heat: b = dE_th / int v^2 dt
+            vs, ts = v[sel], t[sel]
+            v2dt = float(np.sum((vs[1:] ** 2 + vs[:-1] ** 2) / 2 * np.diff(ts)))
+            measured["damping_rate"] = float((traj.E_thermal[-1] - traj.E_thermal[sel][0])
+                                             / v2dt / (2 * m))
             theory_["damping_rate"] = osc.gamma
             window = t[-1] - t[sel][0]
             measured["energy_lost"] = float(traj.E_thermal[-1] - traj.E_thermal[sel][0])
@@ -191,16 +199,14 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     theory_.update(extra_theory)
     keys = KEYS + (DAMPED_KEYS if damped else ()) + tuple(extra_measured)
     regime = "driven" if driven else osc.regime
+    if cfg.spring.k3:
+        regime += " (stiffening: theory linearised about equilibrium, k + 3 k3 s_eq^2)"
     if plastic:
-        regime += f", after a permanent set at t = {t_set_total(traj):.3g} s"
+        regime += f", after a permanent set at t = {traj.t0:.3g} s"
     return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
             "duration": float(traj.t[-1] + traj.t0), "regime": regime,
             "measured": {k: measured.get(k) for k in keys},
             "theory": {k: theory_.get(k) for k in keys}}
-
-
-def t_set_total(traj: physics.Trajectory) -> float:
-    return float(traj.t0)
 
 
 def _after(traj: physics.Trajectory, i: int) -> physics.Trajectory:
@@ -229,7 +235,7 @@ def _why_needed(cfg: Config, osc: theory.Oscillator) -> str:
     return "five decay times"
 
 
-SETTLED = 1e-3    # the transient has decayed to this fraction of its start
+SETTLED = theory.SETTLED
 
 
 def _steady_start(cfg: Config, osc: theory.Oscillator, t: np.ndarray) -> int:
@@ -237,18 +243,10 @@ def _steady_start(cfg: Config, osc: theory.Oscillator, t: np.ndarray) -> int:
     five drive periods before the end and no earlier than half way."""
     end = t[-1]
     settle = -math.log(SETTLED) / osc.gamma if osc.gamma > 0 else end / 2
-    start = max(end / 2, min(settle, end - 5 * 2 * math.pi / cfg.drive.omega))
-    return int(np.searchsorted(t, start))
-
-
-def _fit_gamma(traj, axis, sel, drive_w, m) -> float:
-    """gamma from the fit a = c + a1 y + a2 v + drive terms: a2 = -2 gamma."""
-    y = traj.pos[sel] @ axis
-    v = traj.p[sel] @ axis / m
-    a = traj.a[sel] @ axis
-    t = traj.t[sel]
-    X = np.column_stack([np.ones_like(y), y, v, np.cos(drive_w * t), np.sin(drive_w * t)])
-    return float(-np.linalg.lstsq(X, a, rcond=None)[0][2] / 2)
+    T = 2 * math.pi / cfg.drive.omega
+    start = max(end / 2, min(settle, end - 5 * T))
+    start = end - math.floor((end - start) / T) * T      # a whole number of drive periods
+    return int(np.searchsorted(t, start - 1e-9))
 
 
 def table(result: dict) -> str:

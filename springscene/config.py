@@ -294,6 +294,17 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
         for key in ("amplitude", "omega"):
             if getattr(d, key) <= 0:
                 raise UserError(f"{src}: [drive] {key} is required (> 0) when type = {d.type!r}")
+    s = cfg.spring
+    weight_stretch = cfg.ball.m * float(np.linalg.norm(cfg.physics.g)) / s.k
+    if s.yield_stretch <= weight_stretch:
+        raise UserError(f"{src}: [spring] yield_stretch {s.yield_stretch:g} m is not above the "
+                        f"stretch the ball's weight alone needs, mg/k = {weight_stretch:.4g} m: "
+                        "the spring could never hold the ball")
+    if d.type != "none" and d.omega * cfg.physics.dt > MAX_DRIVE_PHASE_PER_STEP:
+        raise UserError(f"{where('drive.omega', 'physics.dt')}: a drive at {d.omega:g} rad/s "
+                        f"needs dt <= {MAX_DRIVE_PHASE_PER_STEP / d.omega:.3g} s (at least "
+                        f"{2 * math.pi / MAX_DRIVE_PHASE_PER_STEP:.0f} steps per drive period), "
+                        f"dt is {cfg.physics.dt:g} s")
     problem = stability_problem(cfg)
     if problem:
         raise UserError(f"{where('physics.dt', 'physics.integrator')}: {problem}")
@@ -302,6 +313,9 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
     c = cfg.camera
     if abs(float(np.dot(c.forward, c.up))) >= 0.999999 * np.linalg.norm(c.forward) * np.linalg.norm(c.up):
         raise UserError(f"{src}: [camera] up must not be parallel to [camera] forward")
+
+
+MAX_DRIVE_PHASE_PER_STEP = 2 * math.pi / 12   # a drive period needs a dozen steps at least
 
 
 def stability_problem(cfg: Config) -> str | None:

@@ -148,6 +148,8 @@ def save_figure(fig, out_dir: Path, stem: str, formats: tuple[str, ...] = ("png"
 
 def prepare_out_dir(out: str | Path) -> Path:
     """The output folder, created if missing; bad input is a :class:`UserError` naming --out."""
+    if not str(out).strip():
+        raise UserError("--out is empty: give a folder for the figures")
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise UserError(f"--out {out}: is a file, not a folder")
@@ -572,7 +574,7 @@ def resonance_figure(result: sweep.SweepResult, *, demo: str = ""):
         ax = fig.subplots()
         w_fine = np.linspace(w[0], w[-1], 2000)
         A_fine = theory.steady_amplitude(w_fine, result.omega0, result.gamma, 1.0, 1.0) \
-            * result._F0_over_m * 1e3
+            * result.F0_over_m * 1e3
         ax.plot(w_fine, A_fine, color=BLACK, lw=1.4,
                 label="$A(\\omega) = (F_0/m)\\,/\\,\\sqrt{(\\omega_0^2-\\omega^2)^2"
                       "+(2\\gamma\\omega)^2}$")
@@ -875,6 +877,17 @@ def make_figures(cfg: Config, out_dir: str | Path, *, backend: str = "auto",
 
     out = prepare_out_dir(out_dir)
     backends.select(backend)
+    before = set(out.iterdir())
+    try:
+        return _make_figures(cfg, out, backend, antialias)
+    except BaseException:
+        for path in set(out.iterdir()) - before:     # no half set of figures left behind
+            if path.is_file():
+                path.unlink()
+        raise
+
+
+def _make_figures(cfg: Config, out: Path, backend: str, antialias: bool) -> list[Path]:
     osc = theory.Oscillator.from_config(cfg)
     settings = _settings(cfg)
     written: list[Path] = []

@@ -20,6 +20,8 @@ VIDEO_FORMATS = (".mp4", ".gif")
 
 def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out") -> Path:
     """Return ``path`` if its suffix is one of ``formats`` and its folder is writable."""
+    if not str(path).strip():
+        raise UserError(f"{flag} is empty: give a file name ({', '.join(formats)})")
     path = Path(path)
     if path.suffix.lower() not in formats:
         raise UserError(f"{flag} {path}: unknown output format {path.suffix or '(none)'!r} "

@@ -48,6 +48,9 @@ ENERGY_BARS = (
 def parse_overlays(text: str, flag: str = "--overlay") -> tuple[str, ...]:
     """``"time,graph"`` as ("time", "graph"); unknown names are bad input."""
     names = tuple(dict.fromkeys(n.strip() for n in str(text).split(",") if n.strip()))
+    if str(text).strip() and not names:
+        raise UserError(f"{flag} {text!r}: no overlay named (use a comma list of "
+                        f"{', '.join(OVERLAYS)})")
     unknown = [n for n in names if n not in OVERLAYS]
     if unknown:
         raise UserError(f"{flag} {text!r}: unknown overlay {unknown[0]!r} "

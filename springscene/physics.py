@@ -41,6 +41,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import integrators
+from .errors import UserError
 
 DRIVE_KINDS = ("support", "force")
 
@@ -278,6 +279,17 @@ def step(s: System, n: int = 1) -> System:
     def f(pos, t):
         return forces(s, pos, t, flags)
 
+    with np.errstate(over="ignore", invalid="ignore"):   # a blow-up is reported below
+        _advance(s, n, advance, m, f, beta, drive, plastic)
+    if not np.isfinite(s.pos).all():
+        raise UserError(
+            f"the simulation blew up by t = {s.t:.4g} s (positions are no longer finite): "
+            f"dt = {s.dt:g} s is too large for how stiff the springs get (a large k3?); "
+            "use a smaller --dt or [physics] dt")
+    return s
+
+
+def _advance(s: System, n: int, advance, m, f, beta, drive, plastic) -> None:
     for _ in range(n):
         pos, p, heat = advance(s.pos, s.p, m, s.t, s.dt, f, beta)
         s.steps += 1
@@ -288,7 +300,8 @@ def step(s: System, n: int = 1) -> System:
             s.pos[drive.nodes] = drive.base + drive.offsets(s.t)
         if plastic:
             _yield(s)
-    return s
+        if not np.isfinite(s.pos[s.free[:1]]).all():   # stop early once it has blown up
+            return
 
 
 def _yield(s: System) -> None:

@@ -17,14 +17,14 @@ from pathlib import Path
 
 import numpy as np
 
-from . import physics, render, theory
+from . import config, physics, render, theory
 from .config import Config
 from .errors import UserError
 from .outputs import atomic_path, check_output
 
 MAX_FREQUENCIES = 100_000
 WINDOW_PERIODS = 10
-SETTLED = 1e-3
+SETTLED = theory.SETTLED
 
 
 def parse_omega(text: str, flag: str = "--omega") -> np.ndarray:
@@ -61,6 +61,7 @@ class SweepResult:
     simulated: float         # seconds simulated by every copy
     steps: int
     seconds: float           # wall time
+    F0_over_m: float = 1.0   # drive force amplitude per unit mass (m/s^2)
 
     @property
     def peak(self) -> tuple[float, float]:
@@ -73,18 +74,18 @@ class SweepResult:
         """omega_r = sqrt(omega0^2 - 2 gamma^2) and A(omega_r)."""
         wr = math.sqrt(max(self.omega0 ** 2 - 2 * self.gamma ** 2, 0.0))
         return wr, float(theory.steady_amplitude(wr, self.omega0, self.gamma, 1.0, 1.0)
-                         * self._F0_over_m)
-
-    _F0_over_m: float = 1.0
+                         * self.F0_over_m)
 
 
-def check_sweepable(cfg: Config) -> None:
+def check_sweepable(cfg: Config, command: str = "sweep") -> None:
+    """A steady state to measure: a drive along the line of motion, and damping."""
     if not cfg.driven:
-        raise UserError(f"{cfg.source}: sweep needs a [drive] section (type = \"support\" or "
+        raise UserError(f"{cfg.source}: {command} needs a [drive] section (type = \"support\" or "
                         "\"force\", amplitude)")
     if cfg.damping.b <= 0:
-        raise UserError(f"{cfg.source}: sweep needs [damping] b > 0: without damping the "
-                        "amplitude never settles to a steady state")
+        raise UserError(f"{cfg.source}: {command} needs [damping] b > 0 with a drive: without "
+                        "damping the amplitude never settles to a steady state")
+    theory.check_drive_along_motion(cfg, command)
 
 
 def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
@@ -96,10 +97,16 @@ def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
     osc = theory.Oscillator.from_config(cfg)
     axis = np.asarray(osc.axis)
     dt = cfg.physics.dt
+    fastest = float(omega.max())
+    if fastest * dt > config.MAX_DRIVE_PHASE_PER_STEP:
+        raise UserError(f"--omega: a drive at {fastest:g} rad/s needs dt <= "
+                        f"{config.MAX_DRIVE_PHASE_PER_STEP / fastest:.3g} s (at least "
+                        f"{2 * math.pi / config.MAX_DRIVE_PHASE_PER_STEP:.0f} steps per drive "
+                        f"period), dt is {dt:g} s")
     slowest = 2 * math.pi / omega.min()
     window = WINDOW_PERIODS * slowest
     total = max(periods * slowest, -math.log(SETTLED) / osc.gamma + window)
-    n_total = render.step_at(total, dt, "--periods")
+    n_total = render.step_at(total, dt, "--omega/--periods: the run of")
     if n_total * len(omega) > 50 * render.MAX_STEPS:
         raise UserError(f"--omega/--periods: {len(omega)} frequencies x {n_total:,} steps is "
                         f"more than {50 * render.MAX_STEPS:,} spring updates; use fewer")
@@ -123,8 +130,7 @@ def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
                                                               axis)))
     result = SweepResult(omega, (hi - lo) / 2,
                          theory.steady_amplitude(omega, osc.omega0, osc.gamma, F0, cfg.ball.m),
-                         osc.omega0, osc.gamma, s.t, s.steps, seconds)
-    result._F0_over_m = F0 / cfg.ball.m
+                         osc.omega0, osc.gamma, s.t, s.steps, seconds, F0 / cfg.ball.m)
     return result
 
 
@@ -147,9 +153,12 @@ def summary(result: SweepResult) -> str:
     wp, ap = result.peak
     wt, at = result.theory_peak
     err = np.abs(result.amplitude - result.theory) / result.theory
+    inside = ("" if result.omega[0] <= wt <= result.omega[-1]
+              else " (outside the swept range: the measured peak is at its edge)")
     return (f"{len(result.omega)} drive frequencies {result.omega[0]:g}..{result.omega[-1]:g} rad/s, "
             f"{result.simulated:g} s simulated each ({result.steps:,} steps) in "
             f"{result.seconds:.2f} s\n"
-            f"peak: measured {ap:.6g} m at {wp:.4g} rad/s; theory {at:.6g} m at {wt:.4g} rad/s\n"
+            f"peak: measured {ap:.6g} m at {wp:.4g} rad/s; theory {at:.6g} m at {wt:.4g} rad/s"
+            f"{inside}\n"
             f"measured vs A(omega): largest difference {100 * err.max():.2f} %, "
             f"median {100 * np.median(err):.2f} %")

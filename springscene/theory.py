@@ -43,6 +43,7 @@ class Oscillator:
     v0: float
     axis: tuple[float, float, float]
     equilibrium: tuple[float, float, float]
+    s_eq: float | None = None   # equilibrium stretch; m g / k when None
 
     @classmethod
     def from_config(cls, cfg: Config) -> "Oscillator":
@@ -54,11 +55,14 @@ class Oscillator:
             axis = -g / gmag
         else:
             axis = (holder - ball) / np.linalg.norm(holder - ball)
-        m, k = cfg.ball.m, cfg.spring.k
-        eq = holder - axis * (cfg.spring.L0 + m * gmag / k)
+        m, k, k3 = cfg.ball.m, cfg.spring.k, cfg.spring.k3
+        s_eq = stiffening_stretch(k, k3, m * gmag)
+        k_lin = k + 3 * k3 * s_eq ** 2       # a stiffening spring, linearised about equilibrium
+        eq = holder - axis * (cfg.spring.L0 + s_eq)
         x0 = float(np.dot(ball - eq, axis))
         v0 = float(np.dot(cfg.ball.p, axis)) / m
-        return cls(m, k, cfg.damping.b, gmag, cfg.spring.L0, x0, v0, tuple(axis), tuple(eq))
+        return cls(m, k_lin, cfg.damping.b, gmag, cfg.spring.L0, x0, v0, tuple(axis), tuple(eq),
+                   s_eq)
 
     # -- constants -----------------------------------------------------------------------
     @property
@@ -91,8 +95,8 @@ class Oscillator:
 
     @property
     def equilibrium_stretch(self) -> float:
-        """Delta L = m g / k."""
-        return self.m * self.g / self.k
+        """Delta L = m g / k (the root of k s + k3 s^3 = m g for a stiffening spring)."""
+        return self.m * self.g / self.k if self.s_eq is None else self.s_eq
 
     @property
     def amplitude(self) -> float:
@@ -141,6 +145,8 @@ class Oscillator:
 
     def envelope(self, t) -> np.ndarray:
         """A e^(-gamma t) for the under-damped motion."""
+        if self.omega_d == 0:
+            raise ValueError(f"a {self.regime} motion has no envelope")
         B = (self.v0 + self.gamma * self.x0) / self.omega_d
         return math.hypot(self.x0, B) * np.exp(-self.gamma * np.asarray(t, float))
 
@@ -150,12 +156,35 @@ class Oscillator:
         return 0.5 * self.m * v ** 2 + 0.5 * self.k * x ** 2
 
 
+def stiffening_stretch(k: float, k3: float, F: float) -> float:
+    """The stretch s >= 0 at which k s + k3 s^3 = F (F >= 0): m g / k when k3 = 0."""
+    if k3 == 0 or F == 0:
+        return F / k
+    roots = np.roots([k3, 0.0, k, -F])
+    return float(min(r.real for r in roots if abs(r.imag) < 1e-12 and r.real >= 0))
+
+
+SETTLED = 1e-3     # a transient counts as gone once it has decayed to this fraction
+
+
 def drive_force_amplitude(cfg: Config) -> float:
     """F0 of the config's drive: the force's amplitude, or k A for a driven support."""
     d = cfg.drive
     if d.type == "support":
         return cfg.spring.k * d.amplitude
     return d.amplitude
+
+
+def check_drive_along_motion(cfg: Config, command: str) -> None:
+    """The closed forms are one-dimensional: the drive must act along the line of motion."""
+    from .errors import UserError
+
+    axis = np.asarray(Oscillator.from_config(cfg).axis)
+    u = np.asarray(cfg.drive.direction, float)
+    if abs(float(np.dot(u / np.linalg.norm(u), axis))) < 0.999:
+        raise UserError(f"{cfg.source}: [drive] direction {list(cfg.drive.direction)} is not along "
+                        f"the line of motion {[round(float(c), 6) for c in axis]} (against g); "
+                        f"{command} compares with the one-dimensional closed forms")
 
 
 def steady_amplitude(omega, omega0: float, gamma: float, F0: float, m: float) -> np.ndarray:

@@ -107,8 +107,10 @@ def test_unstable_step_in_a_file_names_the_key(tmp_path):
     proc = run_cli("analyze", bad)
     assert proc.returncode == 2
     assert f"{bad}: [physics] dt: dt = 0.3 s is unstable" in proc.stderr
-    bad.write_text('[physics]\ndt = 0.2\nintegrator = "rk4"\n')   # RK4 is stable there
-    assert run_cli("analyze", bad, "--duration", "2").returncode == 0
+    bad.write_text('[physics]\ndt = 0.2\nintegrator = "rk4"\n')   # RK4 is stable there...
+    assert run_cli("simulate", bad, "--duration", "2", "--out", tmp_path / "t.csv").returncode == 0
+    proc = run_cli("analyze", bad, "--duration", "2")   # ...but 2.6 steps a period measure nothing
+    assert proc.returncode == 2 and "gives 2.57 steps a period" in proc.stderr
 
 
 # ---- damping -------------------------------------------------------------------------------
@@ -356,3 +358,38 @@ def test_analyze_refuses_too_short_runs(config_path, duration, words):
     assert proc.returncode == 2
     line, = proc.stderr.strip().splitlines()
     assert words in line
+
+
+@pytest.mark.parametrize("toml, command, words", [
+    ("[spring]\nk3 = 1e9\n", "simulate", "the simulation blew up by t ="),
+    ("[spring]\nyield_stretch = 0.01\n", "analyze", "[spring] yield_stretch 0.01 m is not above"),
+    ('[damping]\nb = 0.1\n[drive]\ntype = "force"\namplitude = 0.01\nomega = 10\n'
+     "direction = [1, 0, 0]\n", "analyze", "[drive] direction [1.0, 0.0, 0.0] is not along"),
+    ('[drive]\ntype = "force"\namplitude = 0.01\nomega = 10\n', "analyze",
+     "analyze needs [damping] b > 0 with a drive"),
+    ('[damping]\nb = 0.1\n[drive]\ntype = "force"\namplitude = 0.01\nomega = 628\n', "analyze",
+     "[drive] omega: a drive at 628 rad/s needs dt <="),
+])
+def test_physics_that_cannot_be_measured_is_refused(tmp_path, toml, command, words):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(toml)
+    out = tmp_path / "t.csv"
+    args = ("--out", out) if command == "simulate" else ()
+    proc = run_cli(command, bad, *args)
+    assert proc.returncode == 2 and not out.exists()
+    line, = proc.stderr.strip().splitlines()
+    assert words in line
+
+
+def test_sweep_refuses_drives_faster_than_the_step():
+    proc = run_cli("sweep", DRIVEN, "--omega", "1e6:1e7:3")
+    assert proc.returncode == 2
+    assert "--omega: a drive at 1e+07 rad/s needs dt <=" in proc.stderr
+
+
+def test_driven_analyze_measures_gamma_in_the_steady_state():
+    """Long after the transient, gamma comes from the heat the drag made (b <v^2>)."""
+    r = analysis.analyze(with_(config.load(DRIVEN), physics=dict(integrator="rk4")), 120.0)
+    assert r["measured"]["damping_rate"] == pytest.approx(0.5, rel=1e-3)
+    assert r["measured"]["energy"] == pytest.approx(r["theory"]["energy"], rel=0.005)
+    assert r["measured"]["amplitude"] == pytest.approx(r["theory"]["amplitude"], rel=0.002)
