@@ -87,7 +87,7 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
         raise UserError(f"{cfg.source}: dt = {cfg.physics.dt:g} s (--dt or [physics] dt) gives {osc.period / cfg.physics.dt:.3g} steps "
                         f"a period: analyze needs at least {MIN_STEPS_PER_PERIOD} to measure; "
                         f"use dt <= {osc.period / MIN_STEPS_PER_PERIOD:.3g} s")
-    need = _needed_duration(cfg, osc)
+    need = needed_duration(cfg, osc)
     if cfg.render.duration < need:
         where = "--duration" if duration is not None else f"{cfg.source}: [render] duration"
         raise UserError(f"{where} {cfg.render.duration:g} s is too short to analyze: it needs "
@@ -218,7 +218,7 @@ def _after(traj: physics.Trajectory, i: int) -> physics.Trajectory:
     return part
 
 
-def _needed_duration(cfg: Config, osc: theory.Oscillator) -> float:
+def needed_duration(cfg: Config, osc: theory.Oscillator) -> float:
     if cfg.driven:
         settle = -math.log(SETTLED) / osc.gamma if osc.gamma > 0 else 0.0
         return settle + 5 * 2 * math.pi / cfg.drive.omega

@@ -207,14 +207,6 @@ def closed_form(cfg: Config, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return free.x(t) + xp, free.v(t) + vp
 
 
-def equilibrium_stretch(k: float, k3: float, weight: float) -> float:
-    """The stretch s at which k s + k3 s^3 = m g (the real root)."""
-    if k3 == 0:
-        return weight / k
-    roots = np.roots([k3, 0.0, k, -weight])
-    return float(roots[np.argmin(np.abs(roots.imag))].real)
-
-
 def demo_damped(cfg: Config) -> tuple[Config, bool]:
     """The config with damping: its own, or the demo b = 0.1 kg/s (True when a demo).
 
@@ -320,18 +312,10 @@ def run_duration(cfg: Config, least: float | None = None) -> float:
 
 def analyze(cfg: Config, duration: float | None = None) -> dict:
     """:func:`analysis.analyze` over ``duration``, or over a run long enough to measure."""
-    try:
+    need = 2 * analysis.needed_duration(cfg, theory.Oscillator.from_config(cfg))
+    if (duration if duration is not None else cfg.render.duration) >= need:
         return analysis.analyze(cfg, duration)
-    except UserError:
-        osc = theory.Oscillator.from_config(cfg)
-        if cfg.driven:
-            settle = -math.log(1e-3) / osc.gamma if osc.gamma > 0 else 0.0
-            need = settle + 10 * 2 * math.pi / cfg.drive.omega
-        elif osc.omega_d > 0:
-            need = 5 * osc.period
-        else:
-            need = 6 / osc.decay_rate
-        return analysis.analyze(cfg, max(need, duration or 0.0, cfg.render.duration))
+    return analysis.analyze(cfg, max(need, duration or 0.0, cfg.render.duration))
 
 
 def period_of(cfg: Config) -> float:
@@ -483,7 +467,7 @@ def _rest_potential(cfg: Config, traj: physics.Trajectory) -> float:
     axis = np.asarray(osc.axis)
     s = cfg.system()
     s.L0[:] = traj.L0[-1]
-    stretch = equilibrium_stretch(cfg.spring.k, cfg.spring.k3, cfg.ball.m * osc.g)
+    stretch = theory.stiffening_stretch(cfg.spring.k, cfg.spring.k3, cfg.ball.m * osc.g)
     s.pos[1] = np.asarray(cfg.holder.pos) - axis * (traj.L0[-1] + stretch)
     s.p[:] = 0.0
     e = physics.energies(s)
@@ -663,7 +647,7 @@ def hooke_figure(cfg: Config, traj: physics.Trajectory):
     t = traj.t
     holder = float(np.dot(cfg.holder.pos, axis))
     weight = cfg.ball.m * osc.g
-    s_eq = equilibrium_stretch(sp.k, sp.k3, weight)
+    s_eq = theory.stiffening_stretch(sp.k, sp.k3, weight)
     y_before = holder - (traj.L0[0] + s_eq)
     y_after = holder - (traj.L0[-1] + s_eq)
     length = holder - y                            # |L| for a ball below its holder
