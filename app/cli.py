@@ -13,11 +13,12 @@ import warnings
 
 from springscene import config
 from springscene.backend import BACKENDS
-from springscene.errors import UserError
+from springscene.errors import ProgramError, UserError
 from springscene.integrators import NAMES
 from springscene.overlay import OVERLAYS, parse_overlays
 
 EXIT_BAD_INPUT = 2
+EXIT_PROGRAM_ERROR = 1     # the user's VPython program raised
 
 
 class _Parser(argparse.ArgumentParser):
@@ -86,6 +87,21 @@ def _build_parser() -> argparse.ArgumentParser:
     s.add_argument("--out", required=True, help="folder for the figures (created if missing)")
     renders(s)
 
+    s = sub.add_parser("vpython", help="run a VPython program headless: a video (or still) "
+                       "and the page VPython would show")
+    s.add_argument("program", help="a VPython 7 program (from vpython import *)")
+    s.add_argument("--out", required=True, help="video.mp4, video.gif or still.png")
+    length = s.add_mutually_exclusive_group()
+    length.add_argument("--duration", type=float,
+                        help="program seconds to film (default 10, or until the program ends)")
+    length.add_argument("--frames", type=int, help="frames to film")
+    s.add_argument("--fps", type=int, default=50, help="frames per program second (default 50)")
+    s.add_argument("--overlay", default="", metavar="LIST",
+                   help="graph: the program's graphs under the scene")
+    s.add_argument("--no-page", action="store_true", help="write no page.html")
+    s.add_argument("--quiet", action="store_true", help="no summary line")
+    renders(s)
+
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
     s.add_argument("--backend", default="auto", choices=BACKENDS)
     return p
@@ -101,6 +117,9 @@ def _run(args: argparse.Namespace) -> int:
         for key, value in info(args.backend).items():
             print(f"{key}: {value}")
         return 0
+
+    if args.command == "vpython":
+        return _vpython(args)
 
     cfg = config.load(args.config)
     if hasattr(args, "dt"):
@@ -149,6 +168,26 @@ def _run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _vpython(args: argparse.Namespace) -> int:
+    from springscene.vpython.runner import run_program
+
+    overlays = tuple(name.strip() for name in args.overlay.split(",") if name.strip())
+    if args.overlay.strip() and not overlays:
+        raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
+    result = run_program(args.program, args.out, duration=args.duration, frames=args.frames,
+                         fps=args.fps, backend=args.backend, antialias=not args.draft,
+                         overlays=overlays, page=not args.no_page)
+    for note in result.notes:
+        print(f"springscene: note: {note}", file=sys.stderr)
+    if not args.quiet:
+        print(f"wrote {result.path}: {result.frames} frame{'s' * (result.frames != 1)} "
+              f"({result.program_seconds:.2f} s of program time, ended by "
+              f"{result.ended}) in {result.seconds:.1f} s")
+        for path in ([result.page] if result.page else []) + result.images:
+            print(f"wrote {path}")
+    return 0
+
+
 def main(argv: list[str] | None = None) -> int:
     # a numerical blow-up is reported as one line (physics.step checks); numpy's overflow
     # warnings on the way there would only add lines
@@ -159,6 +198,9 @@ def main(argv: list[str] | None = None) -> int:
     except UserError as exc:
         print(f"springscene: error: {exc}", file=sys.stderr)
         return EXIT_BAD_INPUT
+    except ProgramError as exc:
+        print(exc, file=sys.stderr)           # the program's own traceback
+        return EXIT_PROGRAM_ERROR
     except BrokenPipeError:          # e.g. `springscene analyze ... | head`
         sys.stderr.close()
         return 0

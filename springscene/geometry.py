@@ -66,7 +66,7 @@ class HelixTube:
         self.radius = radius
         self.wire = thickness / 2 if thickness > 0 else radius / 20
         self.coils = coils
-        n = coils * CHORDS_PER_COIL + 1
+        n = int(round(coils * CHORDS_PER_COIL)) + 1      # VPython allows fractional coils
         s = np.linspace(0.0, 1.0, n)
         sign = 1.0 if ccw else -1.0
         self._s = s

@@ -25,6 +25,7 @@ SPECULAR = 0.8
 SHININESS = 0.6          # VPython's default; specular exponent 100 * shininess
 SPHERE_SLICES = 30
 MULTI_SAMPLES = 4        # MSAA when anti-aliased
+TITLE_FONT_SIZE = 12
 
 
 def _material(actor, color) -> None:
@@ -37,6 +38,25 @@ def _material(actor, color) -> None:
     prop.SetSpecular(SPECULAR)
     prop.SetSpecularColor(1.0, 1.0, 1.0)
     prop.SetSpecularPower(100 * SHININESS)
+
+
+def grab(render_window, width: int, height: int, buffer) -> np.ndarray:
+    """Render ``render_window`` and read it back as (height, width, 3) uint8, top row first.
+
+    ``buffer`` is a ``vtkUnsignedCharArray`` reused from frame to frame.
+    """
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    render_window.Render()
+    render_window.GetPixelData(0, 0, width - 1, height - 1, 0, buffer, 0)
+    img = vtk_to_numpy(buffer).reshape(height, width, 3)
+    return np.ascontiguousarray(img[::-1])
+
+
+def title_color(background) -> str:
+    """Black text on a light background, white on a dark one."""
+    luminance = float(np.dot(background, (0.2126, 0.7152, 0.0722)))
+    return "black" if luminance > 0.5 else "white"
 
 
 class Scene:
@@ -111,9 +131,8 @@ class Scene:
             self._springs.append((int(i), int(j), tube, frame, mesh, actor))
 
         if cfg.scene.title.strip():
-            luminance = float(np.dot(cfg.scene.background, (0.2126, 0.7152, 0.0722)))
-            pl.add_text(cfg.scene.title.strip(), position="upper_edge", font_size=12,
-                        color="black" if luminance > 0.5 else "white", name="title")
+            pl.add_text(cfg.scene.title.strip(), position="upper_edge", font_size=TITLE_FONT_SIZE,
+                        color=title_color(cfg.scene.background), name="title")
         self._autoscale = camera.Autoscaler()
         self.view: camera.View | None = None
         self._range: float | None = None
@@ -169,17 +188,11 @@ class Scene:
 
     def frame(self) -> np.ndarray:
         """Render and read back the frame as an (height, width, 3) uint8 array, top row first."""
-        from vtkmodules.util.numpy_support import vtk_to_numpy
-        from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
-
-        rw = self.plotter.ren_win
         if self._pixels is None:
+            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
             self._pixels = vtkUnsignedCharArray()
-        w, h = self.cfg.scene.width, self.cfg.scene.height
-        rw.Render()
-        rw.GetPixelData(0, 0, w - 1, h - 1, 0, self._pixels, 0)
-        img = vtk_to_numpy(self._pixels).reshape(h, w, 3)
-        return np.ascontiguousarray(img[::-1])
+        return grab(self.plotter.ren_win, self.cfg.scene.width, self.cfg.scene.height,
+                    self._pixels)
 
     _clock = None            # the clock's text actor, added by the first set_clock()
     CLOCK_FONT_SIZE = 20     # px, a little smaller than the title
@@ -194,12 +207,12 @@ class Scene:
         if self._clock is None:
             from vtkmodules.vtkRenderingCore import vtkTextActor
 
-            luminance = float(np.dot(self.cfg.scene.background, (0.2126, 0.7152, 0.0722)))
             actor = vtkTextActor()
             prop = actor.GetTextProperty()
             prop.SetFontFamilyToArial()
             prop.SetFontSize(self.CLOCK_FONT_SIZE)
-            prop.SetColor((0.0,) * 3 if luminance > 0.5 else (1.0,) * 3)
+            dark = title_color(self.cfg.scene.background) == "black"
+            prop.SetColor((0.0,) * 3 if dark else (1.0,) * 3)
             prop.SetJustificationToLeft()
             prop.SetVerticalJustificationToTop()
             actor.SetPosition(self.CLOCK_MARGIN, self.cfg.scene.height - self.CLOCK_MARGIN)

@@ -1,0 +1,328 @@
+"""VPython's ``canvas`` (the ``scene``), its camera, and the ``color`` names.
+
+A canvas holds its objects, lights and view settings with VPython 7's defaults
+(``shared/vpython-reference.md``): 640 x 400, black, ambient 0.2, two distant
+lights, center (0,0,0), forward (0,0,-1), fov pi/3, autoscale on. Setting
+``range``, ``camera.pos`` or ``camera.axis`` turns autoscale off, as VPython does.
+
+Interaction needs a user, and there is none: ``bind`` records nothing to call,
+``waitfor``/``pause`` return at once, and each is noted on stderr by the runner.
+"""
+
+from __future__ import annotations
+
+import colorsys
+import math
+
+from . import widgets
+from .objects import _vec, distant_light
+from .vector import vector
+
+
+class _Colors:
+    """``color.red`` ... and ``color.gray(g)``, VPython's values."""
+
+    red = property(lambda self: vector(1, 0, 0))
+    green = property(lambda self: vector(0, 1, 0))
+    blue = property(lambda self: vector(0, 0, 1))
+    yellow = property(lambda self: vector(1, 1, 0))
+    cyan = property(lambda self: vector(0, 1, 1))
+    magenta = property(lambda self: vector(1, 0, 1))
+    orange = property(lambda self: vector(1, 0.6, 0))
+    purple = property(lambda self: vector(0.4, 0.2, 0.6))
+    white = property(lambda self: vector(1, 1, 1))
+    black = property(lambda self: vector(0, 0, 0))
+
+    @staticmethod
+    def gray(g: float) -> vector:
+        return vector(g, g, g)
+
+    grey = gray
+
+    @staticmethod
+    def hsv_to_rgb(v: vector) -> vector:
+        return vector(*colorsys.hsv_to_rgb(v.x, v.y, v.z))
+
+    @staticmethod
+    def rgb_to_hsv(v: vector) -> vector:
+        return vector(*colorsys.rgb_to_hsv(v.x, v.y, v.z))
+
+    @staticmethod
+    def rgb_to_grayscale(v: vector) -> vector:
+        lum = 0.21 * v.x + 0.71 * v.y + 0.07 * v.z
+        return vector(lum, lum, lum)
+
+
+color = _Colors()
+
+
+class _Anchor:
+    """``scene.title_anchor`` / ``scene.caption_anchor``: where widgets go on the page."""
+
+    def __init__(self, where: str) -> None:
+        self._anchor = where
+
+
+class _Camera:
+    """``scene.camera``: ``pos`` and ``axis`` derived from center, forward and range."""
+
+    def __init__(self, cv: "canvas") -> None:
+        self._cv = cv
+
+    @property
+    def pos(self) -> vector:
+        cv = self._cv
+        return cv.center - cv.forward.norm() * cv._distance()
+
+    @pos.setter
+    def pos(self, value) -> None:
+        cv = self._cv
+        d = cv._distance()
+        cv._autoscale = False
+        cv._range = cv._range_now()
+        cv._center = _vec(value, "camera.pos") + cv.forward.norm() * d
+
+    @property
+    def axis(self) -> vector:
+        cv = self._cv
+        return cv.forward.norm() * cv._distance()
+
+    @axis.setter
+    def axis(self, value) -> None:
+        cv = self._cv
+        value = _vec(value, "camera.axis")
+        pos = self.pos
+        cv._autoscale = False
+        cv._forward = value.norm()
+        d = value.mag
+        cv._range = d * math.tan(cv.fov / 2) * (1 if cv.width >= cv.height
+                                                 else cv.width / cv.height)
+        cv._center = pos + value
+
+    @property
+    def up(self) -> vector:
+        return self._cv.up
+
+    @up.setter
+    def up(self, value) -> None:
+        self._cv.up = value
+
+    def follow(self, obj) -> None:
+        """Keep ``obj`` at the centre of the view (read each frame by the renderer)."""
+        self._cv._follow = obj
+
+    def rotate(self, angle: float, axis=None, origin=None) -> None:
+        cv = self._cv
+        axis = cv.up if axis is None else _vec(axis, "axis")
+        cv._forward = cv.forward.rotate(angle, axis)
+
+
+class _Mouse:
+    """``scene.mouse`` with no user: the pointer rests at the centre, no buttons down."""
+
+    def __init__(self, cv: "canvas") -> None:
+        self._cv = cv
+        self.alt = self.ctrl = self.shift = False
+        self.pick = None
+
+    @property
+    def pos(self) -> vector:
+        return vector(self._cv.center)
+
+    @property
+    def ray(self) -> vector:
+        return self._cv.forward.norm()
+
+    def project(self, normal=None, point=None, d=None):
+        return vector(self._cv.center)
+
+
+class _Event:
+    """What ``waitfor`` returns: an event that no user made."""
+
+    def __init__(self, cv: "canvas", kind: str) -> None:
+        self.event = kind
+        self.type = kind
+        self.pos = vector(cv.center)
+        self.canvas = cv
+        self.which = None
+        self.key = ""
+
+
+class canvas:
+    """A VPython canvas: objects, lights, title and caption, and how the camera sees them."""
+
+    _all: list["canvas"] = []
+    _selected: "canvas | None" = None
+
+    def __init__(self, **args) -> None:
+        self._objects: list = []
+        self.lights: list = []
+        self._title = ""
+        self._caption = ""
+        self.width, self.height = 640, 400
+        self._background = vector(0, 0, 0)
+        self._foreground = vector(1, 1, 1)
+        self._ambient = vector(0.2, 0.2, 0.2)
+        self._center = vector(0, 0, 0)
+        self._forward = vector(0, 0, -1)
+        self._up = vector(0, 1, 0)
+        self.fov = math.pi / 3
+        self._range = None
+        self._autoscale = True
+        self._follow = None
+        self._visible = True
+        self.userzoom = self.userspin = self.userpan = True
+        self.resizable = True
+        self.align = "none"
+        self.camera = _Camera(self)
+        self.mouse = _Mouse(self)
+        self.title_anchor = _Anchor("title")
+        self.caption_anchor = _Anchor("caption")
+        self._autoscaled_range = None       # the renderer's last autoscale result
+        canvas._all.append(self)
+        canvas._selected = self
+        distant_light(direction=vector(0.22, 0.44, 0.88), color=vector(0.8, 0.8, 0.8), canvas=self)
+        distant_light(direction=vector(-0.88, -0.22, -0.44), color=vector(0.3, 0.3, 0.3),
+                      canvas=self)
+        for name, value in args.items():
+            if name in ("pixel_to_world", "objects"):
+                raise AttributeError(f"canvas: {name} cannot be set")
+            setattr(self, name, value)
+
+    # -- registry ------------------------------------------------------------------------
+
+    @classmethod
+    def get_selected(cls) -> "canvas":
+        if cls._selected is None:
+            cls()
+        return cls._selected
+
+    def select(self) -> None:
+        canvas._selected = self
+
+    @classmethod
+    def _reset(cls) -> None:
+        cls._all = []
+        cls._selected = None
+
+    def _add(self, obj) -> None:
+        self._objects.append(obj)
+
+    def _remove(self, obj) -> None:
+        if obj in self._objects:
+            self._objects.remove(obj)
+
+    @property
+    def objects(self) -> list:
+        """The visible objects, as VPython's ``scene.objects``."""
+        return [o for o in self._objects if o.visible]
+
+    def delete(self) -> None:
+        self._visible = False
+
+    visible = property(lambda self: self._visible,
+                       lambda self, v: setattr(self, "_visible", bool(v)))
+
+    # -- page text -----------------------------------------------------------------------
+
+    title = property(lambda self: self._title, lambda self, v: setattr(self, "_title", str(v)))
+    caption = property(lambda self: self._caption,
+                       lambda self, v: setattr(self, "_caption", str(v)))
+
+    def append_to_title(self, *args) -> None:
+        self._title += "".join(str(a) for a in args)
+
+    def append_to_caption(self, *args) -> None:
+        self._caption += "".join(str(a) for a in args)
+
+    # -- colours -------------------------------------------------------------------------
+
+    background = property(lambda self: self._background,
+                          lambda self, v: setattr(self, "_background", _vec(v, "background")))
+    foreground = property(lambda self: self._foreground,
+                          lambda self, v: setattr(self, "_foreground", _vec(v, "foreground")))
+    ambient = property(lambda self: self._ambient,
+                       lambda self, v: setattr(self, "_ambient", _vec(v, "ambient")))
+
+    # -- view ----------------------------------------------------------------------------
+
+    center = property(lambda self: self._center,
+                      lambda self, v: setattr(self, "_center", _vec(v, "center")))
+    up = property(lambda self: self._up, lambda self, v: setattr(self, "_up", _vec(v, "up")))
+
+    @property
+    def forward(self) -> vector:
+        return self._forward
+
+    @forward.setter
+    def forward(self, value) -> None:
+        value = _vec(value, "forward")
+        if value.mag2 == 0:
+            raise ValueError("forward cannot be the zero vector")
+        self._forward = value
+
+    @property
+    def autoscale(self) -> bool:
+        return self._autoscale
+
+    @autoscale.setter
+    def autoscale(self, value) -> None:
+        value = bool(value)
+        if not value and self._autoscale:
+            self._range = self._range_now()       # freeze the range autoscale had reached
+        self._autoscale = value
+
+    @property
+    def range(self) -> float:
+        return self._range_now()
+
+    @range.setter
+    def range(self, value) -> None:
+        if isinstance(value, vector):       # VPython 6 allowed a vector; the x counts
+            value = value.x
+        value = float(value)
+        if not value > 0:
+            raise ValueError("range must be positive")
+        self._range = value
+        self._autoscale = False
+
+    def _range_now(self) -> float:
+        if self._autoscale or self._range is None:
+            if self._autoscaled_range is not None:
+                return self._autoscaled_range
+            return self._range if self._range is not None else 10.0
+        return self._range
+
+    def _distance(self) -> float:
+        d = self._range_now() / math.tan(self.fov / 2)
+        return d if self.width >= self.height else d * self.height / self.width
+
+    # -- things a user would do ----------------------------------------------------------
+
+    def bind(self, events: str, fn=None, *args) -> None:
+        widgets.skipped(f"scene.bind({events!r}, {getattr(fn, '__name__', fn)}): "
+                        "no user events, never called")
+
+    def unbind(self, events: str, fn=None) -> None:
+        pass
+
+    def waitfor(self, events: str, *args) -> _Event:
+        widgets.skipped(f"scene.waitfor({events!r}): returned at once")
+        return _Event(self, events.split()[0] if events.split() else events)
+
+    def pause(self, *args) -> _Event:
+        widgets.skipped("scene.pause(): returned at once")
+        return _Event(self, "click")
+
+    def capture(self, filename: str, *args) -> None:
+        """Save the canvas as ``filename`` (.png added) beside the output, at this moment."""
+        from . import runtime
+
+        name = str(filename)
+        if not name.lower().endswith(".png"):
+            name += ".png"
+        runtime.capture(self, name)
+
+    def pixel_to_world(self, pixels: float) -> float:
+        return 2 * self._range_now() * pixels / min(self.width, self.height)

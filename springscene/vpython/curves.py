@@ -1,0 +1,242 @@
+"""VPython's ``curve`` and ``points``: lists of points, each with its own colour and radius.
+
+As in ``vpython/vpython.py`` (``curveMethods``): points come as vectors, lists of
+vectors or dictionaries ``{"pos": v, "color": c, "radius": r}``; ``append``,
+``modify``, ``point``, ``slice``, ``splice``, ``pop``, ``shift``, ``unshift``,
+``clear`` and ``npoints`` work on the list. ``retain`` keeps only the newest points
+(trails use it). A curve of radius 0 is a thin line; ``points`` are round dots of
+``radius`` pixels (or world units with ``size_units="world"``).
+"""
+
+from __future__ import annotations
+
+from .objects import _Base, _vec
+from .vector import vector
+
+
+def _point(value, constructing: bool) -> dict:
+    if isinstance(value, dict):
+        if "pos" not in value:
+            raise AttributeError("To add a point to a curve or points object, specify pos information.")
+        pt = dict(value)
+        pt["pos"] = _vec(pt["pos"], "pos")
+        if "color" in pt:
+            pt["color"] = _vec(pt["color"], "color")
+        return pt
+    if isinstance(value, (vector, list, tuple)):
+        return {"pos": _vec(value, "pos")}
+    raise AttributeError("Point pos must be a vector" if constructing
+                         else "Point information must be a vector or a dictionary")
+
+
+def _flatten(args: tuple) -> list:
+    """``append(v)``, ``append(v1, v2)``, ``append([v1, v2])`` and ``append(pos=[...])`` alike."""
+    out = []
+    for a in args:
+        if isinstance(a, (list, tuple)) and a and not all(
+                isinstance(c, (int, float)) and not isinstance(c, bool) for c in a):
+            out.extend(a)
+        else:
+            out.append(a)
+    return out
+
+
+class _PointList(_Base):
+    _kind = "curve"
+    _default_radius = 0.0
+
+    def __init__(self, *args, **kwargs) -> None:
+        object.__setattr__(self, "_constructing", True)
+        self._pts: list[dict] = []
+        self._color = vector(1, 1, 1)
+        self._radius = self._default_radius
+        self._retain = -1
+        self._visible = True
+        self._shininess = 0.6
+        self._emissive = False
+        self._origin = vector(0, 0, 0)
+        self._size_units = "pixels"
+        pos = kwargs.pop("pos", None)
+        if pos is not None and args:
+            raise AttributeError("Malformed constructor")
+        for name in ("color", "origin"):
+            if name in kwargs:
+                setattr(self, "_" + name, _vec(kwargs.pop(name), name))
+        for name in ("radius", "retain", "visible", "shininess", "emissive", "size_units",
+                     "pickable"):
+            if name in kwargs:
+                setattr(self, name, kwargs.pop(name))
+        self._color._on_change = self._touch
+        self._origin._on_change = self._touch
+        self._register(kwargs)
+        for name, value in kwargs.items():
+            setattr(self, name, value)
+        if pos is not None:
+            self.append(pos)
+        if args:
+            self.append(*args)
+        self._constructing = False
+
+    # -- attributes ----------------------------------------------------------------------
+
+    color = property(lambda self: self._color, lambda self, v: self._set("_color", _vec(v, "color")))
+    radius = property(lambda self: self._radius, lambda self, v: self._set("_radius", float(v)))
+    retain = property(lambda self: self._retain, lambda self, v: self._set("_retain", int(v)))
+    shininess = property(lambda self: self._shininess,
+                         lambda self, v: self._set("_shininess", float(v)))
+    emissive = property(lambda self: self._emissive,
+                        lambda self, v: self._set("_emissive", bool(v)))
+    pickable = property(lambda self: True, lambda self, v: None)
+
+    @property
+    def size_units(self) -> str:
+        return self._size_units
+
+    @size_units.setter
+    def size_units(self, value) -> None:
+        if value not in ("pixels", "world"):
+            raise ValueError("size_units must be 'pixels' or 'world'")
+        self._set("_size_units", value)
+
+    def _set(self, attr: str, value) -> None:
+        object.__setattr__(self, attr, value)
+        if isinstance(value, vector):
+            value._on_change = self._touch
+        self._dirty = True
+
+    @property
+    def pos(self):
+        raise AttributeError('object does not have a "pos" attribute')
+
+    @pos.setter
+    def pos(self, value) -> None:
+        raise AttributeError("use object methods to change its shape")
+
+    @property
+    def npoints(self) -> int:
+        return len(self._pts)
+
+    # -- the point list ------------------------------------------------------------------
+
+    def _parse(self, args: tuple, kwargs: dict) -> list[dict]:
+        items = _flatten(args) if args else _flatten((kwargs.pop("pos"),)) if "pos" in kwargs \
+            else []
+        if not items:
+            raise AttributeError("To add a point to a curve or points object, specify pos information.")
+        pts = [_point(v, self._constructing) for v in items]
+        for pt in pts:
+            for key in ("color", "radius", "visible"):
+                if key in kwargs and key not in pt:
+                    pt[key] = _vec(kwargs[key], key) if key == "color" else kwargs[key]
+        return pts
+
+    def _trim(self) -> None:
+        if self._retain > 0 and len(self._pts) > self._retain:
+            del self._pts[:len(self._pts) - self._retain]
+        self._dirty = True
+
+    def append(self, *args, **kwargs) -> None:
+        self._pts.extend(self._parse(args, kwargs))
+        self._trim()
+
+    def unshift(self, *args, **kwargs) -> None:
+        self._pts[:0] = self._parse(args, kwargs)
+        self._trim()
+
+    def _check_index(self, n: int) -> None:
+        if n >= len(self._pts) or (n < 0 and -n > len(self._pts)):
+            raise ValueError(f"N = {n} is outside the bounds 0-{len(self._pts) - 1} "
+                             "of the curve points")
+
+    def point(self, n: int) -> dict:
+        self._check_index(n)
+        info = dict(self._pts[n])
+        info.setdefault("color", self._color)
+        info.setdefault("radius", self._radius)
+        info.setdefault("visible", self._visible)
+        info.setdefault("retain", self._retain)
+        return info
+
+    def modify(self, n: int, *args, **kwargs) -> None:
+        self._check_index(n)
+        p = self._pts[n]
+        if len(args) == 1:
+            p["pos"] = _vec(args[0], "pos")
+        for key, value in kwargs.items():
+            if key in ("x", "y", "z"):
+                xyz = list(p["pos"].value)
+                xyz["xyz".index(key)] = float(value)
+                p["pos"] = vector(*xyz)
+            elif key == "pos":
+                p["pos"] = _vec(value, "pos")
+            elif key == "color":
+                p["color"] = _vec(value, "color")
+            elif key in ("radius", "visible", "retain"):
+                p[key] = value
+            else:
+                raise AttributeError(f"modify: unknown point attribute {key!r}")
+        self._dirty = True
+
+    def slice(self, start: int, end: int) -> list[dict]:
+        return self._pts[start:end]
+
+    def splice(self, start: int, howmany: int, *args) -> None:
+        if howmany < 0:
+            raise ValueError("You cannot delete a negative number of points")
+        pts = self._parse(args, {}) if args else []
+        self._pts[start:start + howmany] = pts
+        self._dirty = True
+
+    def pop(self, n: int = -1):
+        if not self._pts:
+            return None
+        self._dirty = True
+        return self._pts.pop(n)
+
+    def shift(self):
+        return self.pop(0)
+
+    def clear(self) -> None:
+        self._pts = []
+        self._dirty = True
+
+    def _arrays(self):
+        """Positions (n, 3), colours (n, 3) and radii (n,) of the visible points."""
+        import numpy as np
+
+        pts = [p for p in self._pts if p.get("visible", True)]
+        n = len(pts)
+        pos = np.empty((n, 3))
+        col = np.empty((n, 3))
+        rad = np.empty(n)
+        c0, r0 = self._color.value, self._radius
+        for k, p in enumerate(pts):
+            pos[k] = p["pos"].value
+            c = p.get("color")
+            col[k] = c.value if c is not None else c0
+            rad[k] = p.get("radius", r0)
+        return pos, col, rad
+
+
+class curve(_PointList):
+    """A polyline; radius 0 draws a thin line, radius > 0 a tube."""
+
+    _kind = "curve"
+
+    origin = property(lambda self: self._origin,
+                      lambda self, v: self._set("_origin", _vec(v, "origin")))
+
+    def _arrays(self):
+        pos, col, rad = super()._arrays()
+        return pos + self._origin.value, col, rad
+
+
+class points(_PointList):
+    """Round dots; ``radius`` in pixels unless ``size_units="world"`` (default 2.5 px)."""
+
+    _kind = "points"
+    _default_radius = 0.0
+
+    @property
+    def origin(self):
+        raise AttributeError("points object does not have an origin")

@@ -1,0 +1,508 @@
+"""Draw a VPython canvas off-screen, one merged mesh per kind of object.
+
+A frame costs one geometry update per batch, not one VTK call per object: every
+visible object of a kind (and opacity, shininess, emissive) is placed with one
+numpy pass (:func:`springscene.vpython.shapes.place`) into one mesh whose points,
+normals and colours are rewritten in place. A batch none of whose objects changed
+is not touched. Labels are the exception: each is a text actor.
+
+Lights, camera, autoscale, shading and the title are those of
+:class:`springscene.scene.Scene`, so a VPython program of the wiki scene draws
+what ``springscene render`` draws.
+"""
+
+from __future__ import annotations
+
+import html
+import math
+import re
+from collections import defaultdict
+
+import numpy as np
+
+from .. import backend, camera
+from ..geometry import HelixTube
+from ..scene import AMBIENT, MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, grab, title_color
+from . import shapes
+
+# kinds drawn from one template scaled by size: (template, anchored at one end)
+TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
+             "cylinder": (shapes.cylinder, True), "cone": (shapes.cone, True),
+             "pyramid": (shapes.pyramid, True)}
+LINE_WIDTH = 2            # px: a curve of radius 0 (VPython draws a thin line)
+POINT_RADIUS = 2.5        # px: points of radius 0
+_TAGS = re.compile(r"<[^>]*>")
+
+
+def plain_text(markup: str) -> str:
+    """The text of an HTML title: tags dropped, entities decoded, lines stripped."""
+    text = _TAGS.sub("", re.sub(r"<br\s*/?>", "\n", markup, flags=re.I))
+    return "\n".join(line.strip() for line in html.unescape(text).splitlines()).strip()
+
+
+def _rgb(colors: np.ndarray) -> np.ndarray:
+    return np.clip(np.rint(np.asarray(colors) * 255), 0, 255).astype(np.uint8)
+
+
+class _Batch:
+    """One actor and mesh holding every object of one kind and look."""
+
+    def __init__(self, plotter, key: tuple, mode: str) -> None:
+        import pyvista as pv
+
+        self.key, self.mode = key, mode
+        self.signature = None
+        self.mesh = pv.PolyData()
+        self.plotter = plotter
+        self.actor = None
+        self.pv = pv
+
+    def set(self, points, normals, colors, cells, signature, style) -> None:
+        """New geometry: in place when the topology (``signature``) is unchanged."""
+        if signature == self.signature and self.actor is not None:
+            self.mesh.points[:] = points
+            self.mesh.GetPoints().Modified()
+            if normals is not None:
+                self.mesh.point_data["Normals"][:] = normals
+                self.mesh.GetPointData().GetNormals().Modified()
+            self.mesh.point_data["rgb"][:] = colors
+            self.mesh.GetPointData().GetArray("rgb").Modified()
+            return
+        pv = self.pv
+        if self.mode == "lines":
+            mesh = pv.PolyData(points, lines=cells)
+        elif self.mode == "points":
+            mesh = pv.PolyData(points)
+        else:
+            mesh = pv.PolyData(points, faces=cells)
+        if normals is not None:
+            mesh.point_data["Normals"] = normals
+            mesh.GetPointData().SetActiveNormals("Normals")
+        mesh.point_data["rgb"] = colors
+        if self.actor is not None:           # the actor keeps its mesh; its content changes
+            self.mesh.shallow_copy(mesh)
+            self.mesh.GetPointData().SetActiveScalars("rgb")
+        else:
+            self.mesh = mesh
+            self.actor = self.plotter.add_mesh(mesh, scalars="rgb", rgb=True,
+                                               smooth_shading=False, show_scalar_bar=False,
+                                               render_points_as_spheres=self.mode == "points")
+            self._style(style)
+        self.signature = signature
+
+    def _style(self, style: dict) -> None:
+        prop = self.actor.GetProperty()
+        prop.SetInterpolationToPhong()
+        prop.SetAmbient(style["ambient"])
+        prop.SetDiffuse(1.0)
+        shininess = style["shininess"]
+        prop.SetSpecular(SPECULAR if shininess > 0 else 0.0)
+        prop.SetSpecularColor(1.0, 1.0, 1.0)
+        prop.SetSpecularPower(max(100 * shininess, 1.0))
+        prop.SetOpacity(style["opacity"])
+        if style["emissive"]:
+            prop.LightingOff()
+        if self.mode == "lines":
+            prop.SetLineWidth(LINE_WIDTH)
+            prop.LightingOff()
+        if self.mode == "points":
+            prop.SetPointSize(style["point_px"])
+            prop.LightingOff()
+
+    def hide(self) -> None:
+        if self.actor is not None:
+            self.actor.SetVisibility(False)
+
+    def show(self) -> None:
+        if self.actor is not None:
+            self.actor.SetVisibility(True)
+
+
+def _frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """pos, rotation (columns X, Y, Z), size and colour arrays of ``objs``."""
+    pos = np.array([o._pos._xyz() for o in objs], dtype=float)
+    axis = np.array([o._axis._xyz() for o in objs], dtype=float)
+    up = np.array([o._up._xyz() for o in objs], dtype=float)
+    size = np.array([o._size._xyz() for o in objs], dtype=float)
+    color = np.array([o._color._xyz() for o in objs], dtype=float)
+    return pos, shapes.frames(axis, up), size, color
+
+
+_TEMPLATES: dict = {}
+_TUBES: dict[tuple, HelixTube] = {}
+
+
+def template(kind: str) -> shapes.Mesh:
+    """The unit mesh of a template kind, made once."""
+    if kind not in _TEMPLATES:
+        _TEMPLATES[kind] = TEMPLATES[kind][0]()
+    return _TEMPLATES[kind]
+
+
+def object_mesh(obj):
+    """World points, normals, triangles and RGB (uint8) of one object, any kind."""
+    kind = obj._kind
+    if kind in TEMPLATES:
+        t = template(kind)
+        pos, R, size, color = _frames([obj])
+        points, normals = shapes.place(t, pos, R, size)
+        return points, normals, t.triangles, np.repeat(_rgb(color), len(points), axis=0)
+    if kind == "curve":
+        kind = "tube" if obj._radius > 0 else kind
+    if kind == "points" and obj._size_units == "world":
+        kind = "sphere-points"
+    return _mesh(kind, obj)
+
+
+def _mesh(kind: str, obj):
+    """World points, normals, triangles and RGB of one object drawn from its own mesh."""
+    if kind == "helix":
+        return _helix(obj)
+    pos = np.array([obj._pos._xyz()])
+    R = shapes.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
+    if kind == "arrow":
+        dims = shapes.arrow_dims(obj._size.x, obj._shaftwidth, obj._headwidth,
+                                 obj._headlength)
+        mesh = shapes.arrow(*dims)
+        scale = np.ones((1, 3))
+    elif kind == "ring":
+        mesh = shapes.ring(obj.radius, obj.thickness)
+        scale = np.ones((1, 3))
+    elif kind == "compound":
+        mesh = obj._mesh
+        scale = np.array([obj._size._xyz()]) / obj._size0
+        points, normals = shapes.place(mesh, pos, R, scale)
+        return points, normals, mesh.triangles, obj._vertex_rgb()
+    elif kind == "tube":
+        p, col, rad = obj._arrays()
+        if len(p) < 2:
+            return None
+        mesh = shapes.tube(p, rad)
+        rgb = _rgb(np.repeat(col, len(mesh.points) // len(p), axis=0)) \
+            if len(mesh.points) % len(p) == 0 else \
+            np.repeat(_rgb(col[:1]), len(mesh.points), axis=0)
+        return mesh.points, mesh.normals, mesh.triangles, rgb
+    elif kind == "sphere-points":
+        p, col, rad = obj._arrays()
+        if not len(p):
+            return None
+        t = template("sphere")
+        n = len(t.points)
+        eye = np.broadcast_to(np.eye(3), (len(p), 3, 3))
+        points, normals = shapes.place(t, p, eye, np.repeat(2 * rad[:, None], 3, axis=1))
+        tris = shapes.tile(t.triangles, n, len(p))
+        return points, normals, tris, np.repeat(_rgb(col), n, axis=0)
+    else:
+        raise ValueError(kind)
+    points, normals = shapes.place(mesh, pos, R, scale)
+    return points, normals, mesh.triangles, np.repeat(_rgb([obj._color._xyz()]),
+                                                      len(points), axis=0)
+
+def _helix(obj):
+    radius = obj._size.y / 2
+    thickness = obj._thickness if obj._thickness is not None else 0.0
+    key = (radius, thickness, float(obj._coils), bool(obj._ccw))
+    tube = _TUBES.get(key)
+    if tube is None:
+        tube = _TUBES[key] = HelixTube(radius, thickness, obj._coils, obj._ccw)
+        tube.triangles = _quads_to_triangles(tube.faces())
+    axis = np.array(obj._axis._xyz())
+    R = shapes.frames(axis[None], np.array([obj._up._xyz()]))[0]
+    if not np.linalg.norm(axis) > 0:
+        return None
+    points, normals = tube.points(obj._pos._xyz(), axis, R)
+    return points, normals, tube.triangles, np.repeat(_rgb([obj._color._xyz()]),
+                                                      len(points), axis=0)
+
+
+class Renderer:
+    """Off-screen drawing of one canvas; :meth:`frame` gives the picture now.
+
+    Parameters
+    ----------
+    cv : canvas
+        The VPython canvas to draw (its size is fixed at the first frame).
+    antialias : bool
+        4x multisampling when True.
+    backend_name : str
+        "auto", "egl" or "osmesa".
+    """
+
+    def __init__(self, cv, antialias: bool = True, backend_name: str = "auto") -> None:
+        backend.select(backend_name)
+        import pyvista as pv
+
+        self.cv = cv
+        self.width, self.height = int(cv.width), int(cv.height)
+        pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
+        pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
+        self.plotter = pl
+        self._batches: dict[tuple, _Batch] = {}
+        self._labels: dict[int, object] = {}
+        self._lights_sig = None
+        self._title = None
+        self._title_text = None
+        self._background = None
+        self._autoscale = camera.Autoscaler()
+        self._bounds: dict[tuple, np.ndarray] = {}
+        self.view: camera.View | None = None
+        self._pixels = None
+
+    # -- per frame -----------------------------------------------------------------------
+
+    def frame(self) -> np.ndarray:
+        """Bring the scene up to date and return it as (height, width, 3) uint8."""
+        self.sync()
+        if self._pixels is None:
+            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+            self._pixels = vtkUnsignedCharArray()
+        return grab(self.plotter.ren_win, self.width, self.height, self._pixels)
+
+    def sync(self) -> None:
+        """Rewrite every batch whose objects changed, then the lights, title and camera."""
+        cv = self.cv
+        groups: dict[tuple, list] = defaultdict(list)
+        labels = []
+        for obj in cv._objects:
+            if not obj._visible:
+                continue
+            kind = obj._kind
+            if kind == "label":
+                labels.append(obj)
+                continue
+            if kind in ("curve", "points"):
+                key = self._point_key(obj)
+            else:
+                key = (kind, float(obj._opacity), float(obj._shininess), bool(obj._emissive))
+            groups[key].append(obj)
+        for key, batch in self._batches.items():
+            if key not in groups:
+                batch.hide()
+                self._bounds.pop(key, None)
+        for key, objs in groups.items():
+            batch = self._batches.get(key)
+            if batch is None:
+                batch = self._batches[key] = _Batch(self.plotter, key, self._mode(key))
+            members = tuple(map(id, objs))
+            if batch.signature is not None and getattr(batch, "members", None) == members \
+                    and not any(o._dirty for o in objs):
+                batch.show()
+                continue
+            self._draw(batch, key, objs)
+            batch.members = members
+            batch.show()
+            for o in objs:
+                o._dirty = False
+        self._sync_background()
+        self._sync_lights()
+        self._sync_title()
+        self._place_camera()
+        self._sync_labels(labels)
+
+    @staticmethod
+    def _point_key(obj) -> tuple:
+        if obj._kind == "points":
+            if obj._size_units == "world":
+                return ("sphere-points", float(obj._shininess), bool(obj._emissive))
+            r = obj._radius if obj._radius > 0 else POINT_RADIUS
+            return ("points", float(r))
+        if obj._radius > 0:
+            return ("tube", float(obj._shininess), bool(obj._emissive))
+        return ("lines",)
+
+    @staticmethod
+    def _mode(key: tuple) -> str:
+        return {"lines": "lines", "points": "points"}.get(key[0], "triangles")
+
+    def _style(self, key: tuple) -> dict:
+        ambient = float(np.mean(self.cv.ambient.value))
+        style = {"ambient": ambient, "opacity": 1.0, "shininess": 0.6, "emissive": False,
+                 "point_px": 2 * POINT_RADIUS}
+        if key[0] in TEMPLATES or key[0] in ("arrow", "helix", "ring", "compound"):
+            style.update(opacity=key[1], shininess=key[2], emissive=key[3])
+        elif key[0] in ("tube", "sphere-points"):
+            style.update(shininess=key[1], emissive=key[2])
+        elif key[0] == "points":
+            style["point_px"] = 2 * key[1]
+        return style
+
+    # -- geometry per kind ---------------------------------------------------------------
+
+    def _draw(self, batch: _Batch, key: tuple, objs: list) -> None:
+        kind = key[0]
+        style = self._style(key)
+        if kind in TEMPLATES:
+            self._draw_templates(batch, key, objs, style)
+        elif kind in ("lines", "points"):
+            self._draw_points(batch, key, objs, style)
+        else:
+            meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
+            self._draw_meshes(batch, key, meshes, style)
+
+    def _draw_templates(self, batch, key, objs, style) -> None:
+        template_ = template(key[0])
+        anchored = TEMPLATES[key[0]][1]
+        pos, R, size, color = _frames(objs)
+        points, normals = shapes.place(template_, pos, R, size)
+        n = len(template_.points)
+        colors = np.repeat(_rgb(color), n, axis=0)
+        cells = shapes.vtk_cells(shapes.tile(template_.triangles, n, len(objs)))
+        batch.set(points, normals, colors, cells, ("tmpl", len(objs)), style)
+        # bounds: the object's oriented box
+        half = np.abs(R) @ (size[:, :, None] / 2)
+        centre = pos + (R[:, :, 0] * size[:, :1] / 2 if anchored else 0)
+        half = half[:, :, 0]
+        self._bounds[key] = np.stack([centre - half, centre + half], axis=1)
+
+    def _draw_meshes(self, batch, key, meshes, style) -> None:
+        if not meshes:
+            batch.hide()
+            self._bounds.pop(key, None)
+            return
+        offsets = np.cumsum([0] + [len(m[0]) for m in meshes])
+        points = np.concatenate([m[0] for m in meshes])
+        normals = np.concatenate([m[1] for m in meshes])
+        colors = np.concatenate([m[3] for m in meshes])
+        signature = tuple((len(m[0]), len(m[2])) for m in meshes)
+        if signature == batch.signature:
+            cells = None
+        else:
+            cells = shapes.vtk_cells(np.concatenate([m[2] + off
+                                                     for m, off in zip(meshes, offsets)]))
+        batch.set(points, normals, colors, cells, signature, style)
+        self._bounds[key] = np.array([[m[0].min(axis=0), m[0].max(axis=0)] for m in meshes])
+
+    def _draw_points(self, batch, key, objs, style) -> None:
+        chunks = [o._arrays() for o in objs]
+        chunks = [c for c in chunks if len(c[0]) >= (2 if key[0] == "lines" else 1)]
+        if not chunks:
+            batch.hide()
+            self._bounds.pop(key, None)
+            return
+        points = np.concatenate([c[0] for c in chunks])
+        colors = _rgb(np.concatenate([c[1] for c in chunks]))
+        signature = tuple(len(c[0]) for c in chunks)
+        cells = None
+        if signature != batch.signature:
+            if key[0] == "lines":
+                parts, start = [], 0
+                for c in chunks:
+                    n = len(c[0])
+                    parts.append(np.concatenate([[n], np.arange(start, start + n)]))
+                    start += n
+                cells = np.concatenate(parts)
+        batch.set(points, None, colors, cells, signature, style)
+        self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
+
+    # -- the rest of the picture ---------------------------------------------------------
+
+    def _sync_background(self) -> None:
+        bg = tuple(self.cv.background.value)
+        if bg != self._background:
+            self.plotter.set_background(bg)
+            self._background = bg
+
+    def _sync_lights(self) -> None:
+        lights = [lt for lt in self.cv.lights if lt._visible]
+        sig = tuple((type(lt).__name__, tuple(lt.color.value),
+                     tuple((lt.direction if hasattr(lt, "_direction") else lt.pos).value))
+                    for lt in lights)
+        if sig == self._lights_sig:
+            return
+        import pyvista as pv
+
+        self.plotter.remove_all_lights()
+        for kind, colour, where in sig:
+            if kind == "distant_light":
+                light = pv.Light(position=where, focal_point=(0, 0, 0), color=colour,
+                                 light_type="scene light")
+                light.positional = False
+            else:
+                light = pv.Light(position=where, color=colour, light_type="scene light")
+                light.positional = True
+                light.cone_angle = 180
+            self.plotter.add_light(light)
+        self._lights_sig = sig
+
+    def _sync_title(self) -> None:
+        text = plain_text(self.cv.title)
+        if text == self._title_text:
+            return
+        if self._title is not None:
+            self.plotter.remove_actor(self._title)
+            self._title = None
+        if text:
+            self._title = self.plotter.add_text(
+                text, position="upper_edge", font_size=TITLE_FONT_SIZE,
+                color=title_color(self.cv.background.value), name="title")
+        self._title_text = text
+
+    def object_bounds(self) -> np.ndarray:
+        """Axis-aligned bounds (n, 2, 3) of every drawn object, for autoscale."""
+        parts = [b for key, b in self._bounds.items()
+                 if self._batches[key].actor is not None and self._batches[key].actor.GetVisibility()]
+        return np.concatenate(parts) if parts else np.zeros((0, 2, 3))
+
+    def _place_camera(self) -> None:
+        cv = self.cv
+        w, h = self.width, self.height
+        if cv._follow is not None:
+            cv._center = cv._follow.pos
+        center = np.array(cv.center.value)
+        if cv.autoscale:
+            bounds = self.object_bounds()
+            if len(bounds):
+                cv._autoscaled_range = self._autoscale.update(bounds, center, cv.fov, w, h)
+        rng = cv._range_now()
+        v = camera.view(center, np.array(cv.forward.value), np.array(cv.up.value), cv.fov,
+                        rng, w, h)
+        cam = self.plotter.renderer.GetActiveCamera()
+        cam.SetPosition(*v.position)
+        cam.SetFocalPoint(*v.focal_point)
+        cam.SetViewUp(*v.up)
+        cam.SetViewAngle(math.degrees(v.fov))
+        cam.SetClippingRange(v.near, v.far)
+        self.plotter.camera_set = True
+        self.view = v
+
+    def _sync_labels(self, labels: list) -> None:
+        from vtkmodules.vtkRenderingCore import vtkTextActor
+
+        seen = set()
+        for lab in labels:
+            actor = self._labels.get(id(lab))
+            if actor is None:
+                actor = self._labels[id(lab)] = vtkTextActor()
+                self.plotter.renderer.AddViewProp(actor)
+            seen.add(id(lab))
+            if lab.pixel_pos:
+                col, row = lab.pos.x, lab.pos.y
+            else:
+                col, row = self.view.project(np.array(lab.pos.value))
+                row = self.height - row
+            actor.SetInput(plain_text(lab.text))
+            actor.SetPosition(col + lab.xoffset, row + lab.yoffset)
+            prop = actor.GetTextProperty()
+            prop.SetFontSize(int(round(lab.height)))
+            prop.SetColor(*lab.color.value)
+            prop.SetFontFamilyToArial()
+            prop.SetJustificationToCentered()
+            prop.SetVerticalJustificationToCentered()
+            prop.SetBackgroundColor(*lab.background.value)
+            prop.SetBackgroundOpacity(lab.opacity)
+            prop.SetFrame(bool(lab.box))
+            prop.SetFrameColor(*lab.linecolor.value)
+            actor.SetVisibility(True)
+        for key, actor in self._labels.items():
+            if key not in seen:
+                actor.SetVisibility(False)
+
+    def close(self) -> None:
+        self.plotter.close()
+
+
+def _quads_to_triangles(flat: np.ndarray) -> np.ndarray:
+    """VTK flat quads ``[4, a, b, c, d, ...]`` as triangles (a, b, c), (a, c, d)."""
+    q = flat.reshape(-1, 5)[:, 1:]
+    return np.concatenate([q[:, [0, 1, 2]], q[:, [0, 2, 3]]]).reshape(2, -1, 3) \
+        .transpose(1, 0, 2).reshape(-1, 3)

@@ -1,0 +1,300 @@
+"""Run a VPython program headless and turn it into a video (or a still) and a page.
+
+The program is the user's own code, run in this process as ``__main__`` with
+``vpython`` (and the older ``visual``) importing springscene's module; no sandbox
+is promised. Its clock is :mod:`springscene.vpython.runtime`'s: frames are taken
+on ``rate`` calls, and the run ends when the program ends or when the video has
+its frames. An exception in the program is reported with the program's own
+traceback (its file and line, springscene's frames left out): :class:`ProgramError`.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+import time
+import traceback
+import types
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import ProgramError, UserError
+from ..outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps, \
+    write_png
+from . import runtime
+
+FORMATS = VIDEO_FORMATS + (".png",)
+DEFAULT_FPS = 50
+DEFAULT_DURATION = 10.0          # program seconds, when neither --duration nor --frames
+MAX_FRAMES = 360_000             # two hours at 50 frames/s
+OVERLAYS = ("graph",)
+_PACKAGE = str(Path(__file__).resolve().parent.parent)
+
+
+@dataclass
+class ProgramResult:
+    path: Path
+    frames: int
+    fps: int
+    program_seconds: float       # the program clock when the run ended
+    seconds: float               # wall time
+    ended: str                   # "program" (it ended), "duration" or "frames"
+    page: Path | None = None
+    images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
+    notes: list[str] = field(default_factory=list)        # what ran without a user
+
+
+def _check_program(program) -> Path:
+    path = Path(program)
+    if not str(program).strip():
+        raise UserError("program: give a VPython program (a .py file)")
+    if not path.is_file():
+        raise UserError(f"{path}: no such program file")
+    if not os.access(path, os.R_OK):
+        raise UserError(f"{path}: cannot read it")
+    return path
+
+
+def _frame_budget(duration: float | None, frames: int | None, fps: int) -> tuple[int, str]:
+    if not isinstance(fps, int) or fps <= 0:
+        raise UserError(f"--fps {fps}: must be a whole number above 0")
+    if frames is not None:
+        if frames <= 0:
+            raise UserError(f"--frames {frames}: must be at least 1")
+        if frames > MAX_FRAMES:
+            raise UserError(f"--frames {frames}: the limit is {MAX_FRAMES:,}")
+        return frames, "frames"
+    if duration is None:
+        duration = DEFAULT_DURATION
+    elif not duration > 0 or duration != duration or duration == float("inf"):
+        raise UserError(f"--duration {duration:g}: must be a number of seconds above 0")
+    n = int(round(duration * fps))
+    if n > MAX_FRAMES:
+        raise UserError(f"--duration {duration:g} at --fps {fps} is {n:,} frames; "
+                        f"the limit is {MAX_FRAMES:,}")
+    return max(n, 1), "duration"
+
+
+def _user_traceback(exc: BaseException) -> str:
+    """The traceback of ``exc`` with springscene's own frames dropped."""
+    tbe = traceback.TracebackException.from_exception(exc)
+
+    def strip(t: traceback.TracebackException | None, seen: set) -> None:
+        if t is None or id(t) in seen:
+            return
+        seen.add(id(t))
+        t.stack = traceback.StackSummary.from_list(
+            [f for f in t.stack if not str(Path(f.filename).resolve()).startswith(_PACKAGE)])
+        strip(t.__cause__, seen)
+        strip(t.__context__, seen)
+
+    strip(tbe, set())
+    return "".join(tbe.format()).rstrip("\n")
+
+
+def _install_modules():
+    """Make ``import vpython`` (and ``visual``, ``visual.graph``) import springscene's module."""
+    from .. import vpython as vp
+
+    visual = types.ModuleType("visual", "springscene's vpython under VPython 6's name")
+    for name in vp.__all__:
+        setattr(visual, name, getattr(vp, name))
+    visual.display = vp.canvas
+    visual.__all__ = list(vp.__all__) + ["display"]
+    visual_graph = types.ModuleType("visual.graph")
+    for name in vp.__all__:
+        setattr(visual_graph, name, getattr(vp, name))
+    visual_graph.gdisplay = vp.graph
+    visual_graph.__all__ = list(vp.__all__) + ["gdisplay"]
+    visual.graph = visual_graph
+    saved = {name: sys.modules.get(name) for name in ("vpython", "visual", "visual.graph")}
+    sys.modules["vpython"] = vp
+    sys.modules["visual"] = visual
+    sys.modules["visual.graph"] = visual_graph
+    return saved
+
+
+def _restore_modules(saved: dict) -> None:
+    for name, module in saved.items():
+        if module is None:
+            sys.modules.pop(name, None)
+        else:
+            sys.modules[name] = module
+
+
+class _Film:
+    """Takes the frames: draws the shown canvas, adds the graph strip, feeds the writer."""
+
+    def __init__(self, tmp: Path | None, fps: int, overlays: tuple[str, ...], backend: str,
+                 antialias: bool, on_frame) -> None:
+        self.tmp, self.fps, self.overlays = tmp, fps, overlays
+        self.backend, self.antialias, self.on_frame = backend, antialias, on_frame
+        self.renderers: dict[int, object] = {}
+        self.shown = None
+        self.writer = None
+        self.strip = None
+        self.frames = 0
+        self.notes: list[str] = []
+
+    def renderer(self, cv):
+        from .draw import Renderer
+
+        r = self.renderers.get(id(cv))
+        if r is None:
+            r = self.renderers[id(cv)] = Renderer(cv, self.antialias, self.backend)
+        return r
+
+    def _choose_canvas(self):
+        from .canvas import canvas
+
+        shown = [cv for cv in canvas._all if cv._visible and cv._objects]
+        if len(shown) > 1:
+            self.notes.append(f"{len(shown)} canvases have objects; the video shows the first")
+        return shown[0] if shown else canvas.get_selected()
+
+    def picture(self) -> np.ndarray:
+        if self.shown is None:
+            self.shown = self._choose_canvas()
+        return self.renderer(self.shown).frame()
+
+    def take(self) -> None:
+        image = self.picture()
+        if self.writer is None:
+            from .graph import GraphStrip, graphs
+
+            h, w = image.shape[:2]
+            if "graph" in self.overlays:
+                if graphs():
+                    self.strip = GraphStrip(list(graphs()), w)
+                else:
+                    self.notes.append("--overlay graph: the program had made no graph "
+                                      "by its first frame")
+            size = (w, h + (self.strip.size[1] if self.strip is not None else 0))
+            self.writer = VideoWriter(self.tmp, self.fps, size)
+        if self.strip is not None:
+            image = np.vstack([image, self.strip.draw()])
+        self.writer.write(image)
+        self.frames += 1
+        if self.on_frame is not None:
+            self.on_frame(self.frames - 1, image)
+
+    def close(self, ok: bool) -> None:
+        if self.writer is not None:
+            self.writer.__exit__(None if ok else RuntimeError, None, None)
+        for r in self.renderers.values():
+            r.close()
+
+
+def run_program(program, out, *, duration: float | None = None, frames: int | None = None,
+                fps: int = DEFAULT_FPS, backend: str = "auto", antialias: bool = True,
+                overlays: tuple[str, ...] = (), page: bool = True,
+                on_frame=None) -> ProgramResult:
+    """Run a VPython program and write its video (MP4, GIF) or final still (PNG).
+
+    Beside ``out`` go ``page.html`` (the page VPython would show, the video where
+    the canvas was), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
+    ``on_frame(index, image)`` is called for each frame taken (for tests).
+    """
+    path = _check_program(program)
+    out = check_output(out, FORMATS)
+    for name in overlays:
+        if name not in OVERLAYS:
+            raise UserError(f"--overlay: unknown overlay {name!r} (choose from "
+                            f"{', '.join(OVERLAYS)})")
+    still = out.suffix.lower() == ".png"
+    if still and frames is not None:
+        raise UserError("--frames: a .png output is one still; leave --frames out")
+    budget, limit = _frame_budget(duration, frames, fps)
+    if not still:
+        check_video_fps(out, fps)
+    try:
+        source = path.read_text(encoding="utf-8")
+        code = compile(source, str(path), "exec")
+    except UnicodeDecodeError:
+        raise UserError(f"{path}: not a UTF-8 text file") from None
+    except SyntaxError as exc:
+        raise ProgramError(_user_traceback(exc)) from None
+
+    from .. import vpython as vp
+
+    vp.reset()
+    start = time.perf_counter()
+    images: list[Path] = []
+    with atomic_path(out) as tmp:
+        film = _Film(None if still else tmp, fps, overlays, backend, antialias, on_frame)
+
+        def capture(cv, name: str) -> None:
+            target = out.parent / Path(name).name
+            write_png(target, film.renderer(cv).frame())
+            images.append(target)
+
+        # a still only needs the end: the clock runs, no frame is taken on it
+        timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
+        saved = _install_modules()
+        saved_argv, saved_path = sys.argv, list(sys.path)
+        sys.argv = [str(path)]
+        sys.path.insert(0, str(path.resolve().parent))
+        runtime.start(timeline)
+        runtime.set_capture(capture)
+        ended, ok = "program", False
+        try:
+            exec(code, {"__name__": "__main__", "__file__": str(path),
+                        "__builtins__": __builtins__})
+            ok = True
+        except runtime.Stop:
+            ended, ok = limit, True
+        except SystemExit as exc:
+            if exc.code not in (None, 0):
+                raise ProgramError(f"{path}: the program exited with status {exc.code}") \
+                    from None
+            ok = True
+        except KeyboardInterrupt:
+            raise
+        except BaseException as exc:     # the program's own error, with its own traceback
+            raise ProgramError(_user_traceback(exc)) from None
+        finally:
+            runtime.start(None)
+            runtime.set_capture(None)
+            sys.argv, sys.path[:] = saved_argv, saved_path
+            _restore_modules(saved)
+            if not ok:
+                film.close(False)
+        try:
+            if still:
+                write_png(tmp, film.picture())
+            elif film.frames == 0:            # no rate(): the final scene is the video
+                film.take()
+        finally:
+            film.close(True)
+        result = ProgramResult(out, 1 if still else film.frames, fps, timeline.seconds,
+                               time.perf_counter() - start, ended)
+    result.images = images + _write_extras(out, result, page, still)
+    from . import widgets
+
+    result.notes = film.notes + widgets.notes()
+    if ended == "duration" and duration is None:
+        result.notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
+                            "(the default; use --duration or --frames)")
+    return result
+
+
+def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> list[Path]:
+    """The program's graphs as PNGs and ``page.html`` beside ``out``."""
+    from . import widgets
+    from .canvas import canvas
+    from .graph import graphs, write_images
+
+    written = list(write_images(graphs(), out.parent, out.stem)) if graphs() else []
+    if page:
+        from .page import write_page
+
+        cv = next((c for c in canvas._all if c._objects), canvas.get_selected())
+        kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
+        result.page = write_page(out.parent / "page.html", title_html=cv.title,
+                                 caption_html=cv.caption, media=out.name, media_kind=kind,
+                                 width=int(cv.width), height=int(cv.height),
+                                 graph_images=[p.name for p in written],
+                                 widgets=widgets.widgets_in_order())
+    return written

@@ -1,0 +1,114 @@
+"""The program clock: ``rate`` and ``sleep`` advance it, and frames are taken on it.
+
+Each ``rate(n)`` call is one loop iteration and advances the program clock by
+1/n s; ``sleep(t)`` by t s. The scene as it stands at a call is what shows until
+the next one, so every video frame whose time f/fps falls in that span is taken
+there. The clock is kept as an exact fraction: ``rate(100)`` at 50 frames/s
+takes a frame at exactly every second call, for any length of run.
+
+When the run has all its frames, the call raises :class:`Stop`, a
+``BaseException`` a program's own ``except Exception`` cannot swallow.
+"""
+
+from __future__ import annotations
+
+from fractions import Fraction
+from typing import Callable
+
+MAX_DENOMINATOR = 10 ** 9
+
+
+class Stop(BaseException):
+    """Raised inside the program when the video has all its frames."""
+
+
+class Timeline:
+    """The clock of one run and the frames due on it.
+
+    Parameters
+    ----------
+    fps : int
+        Video frames per program second.
+    max_frames : int | None
+        Stop the program once this many frames are taken (None: never).
+    take : callable
+        Called with no arguments for each frame due; it draws and stores it.
+    """
+
+    def __init__(self, fps: int, max_frames: int | None, take: Callable[[], None]) -> None:
+        self.fps = fps
+        self.max_frames = max_frames
+        self.take = take
+        self.clock = Fraction(0)
+        self.frames = 0
+        self.calls = 0
+
+    @property
+    def seconds(self) -> float:
+        return float(self.clock)
+
+    def advance(self, span: Fraction) -> None:
+        """Show the scene as it is for ``span`` program seconds."""
+        end = self.clock + span
+        while Fraction(self.frames, self.fps) < end:
+            if self.max_frames is not None and self.frames >= self.max_frames:
+                break
+            self.take()
+            self.frames += 1
+        self.clock = end
+        if self.max_frames is not None and self.frames >= self.max_frames:
+            raise Stop
+
+
+_current: Timeline | None = None
+
+
+def start(timeline: Timeline | None) -> None:
+    """Make ``timeline`` the clock ``rate`` and ``sleep`` advance (None: no clock)."""
+    global _current
+    _current = timeline
+
+
+def _span(value, what: str) -> Fraction:
+    try:
+        span = Fraction(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{what} must be a number, not {type(value).__name__}") from None
+    return span.limit_denominator(MAX_DENOMINATOR) if span.denominator > MAX_DENOMINATOR \
+        else span
+
+
+def rate(n) -> None:
+    """One loop iteration at most ``n`` times a program second: the clock moves 1/n s."""
+    try:
+        ok = n >= 1
+    except TypeError:
+        raise TypeError(f"rate value must be a number, not {type(n).__name__}") from None
+    if not ok:
+        raise ValueError("rate value must be greater than or equal to 1")
+    if _current is not None:
+        _current.calls += 1
+        _current.advance(1 / _span(n, "rate value"))
+
+
+def sleep(dt) -> None:
+    """Wait ``dt`` program seconds: the scene shows, unchanged, for that long."""
+    span = _span(dt, "sleep time")
+    if span < 0:
+        raise ValueError("sleep time must not be negative")
+    if _current is not None:
+        _current.advance(span)
+
+
+_capture: Callable | None = None
+
+
+def set_capture(fn: Callable | None) -> None:
+    """Who saves ``scene.capture(name)`` pictures in this run (None: nobody)."""
+    global _capture
+    _capture = fn
+
+
+def capture(cv, name: str) -> None:
+    if _capture is not None:
+        _capture(cv, name)
