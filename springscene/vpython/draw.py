@@ -158,12 +158,13 @@ def _mesh(kind: str, obj):
     """World points, normals, triangles and RGB of one object drawn from its own mesh."""
     if kind == "helix":
         return _helix(obj)
-    pos = np.array([obj._pos._xyz()])
-    R = shapes.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
+    if kind in ("arrow", "ring", "compound"):
+        pos = np.array([obj._pos._xyz()])
+        R = shapes.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
     if kind == "arrow":
         dims = shapes.arrow_dims(obj._size.x, obj._shaftwidth, obj._headwidth,
                                  obj._headlength)
-        mesh = shapes.arrow(*dims)
+        mesh = shapes.arrow(obj._size.x, *dims)
         scale = np.ones((1, 3))
     elif kind == "ring":
         mesh = shapes.ring(obj.radius, obj.thickness)

@@ -78,8 +78,14 @@ def _frame_budget(duration: float | None, frames: int | None, fps: int) -> tuple
 
 
 def _user_traceback(exc: BaseException) -> str:
-    """The traceback of ``exc`` with springscene's own frames dropped."""
+    """The traceback of ``exc`` with springscene's own frames dropped.
+
+    With the environment variable ``SPRINGSCENE_DEBUG`` set, every frame is kept
+    (for finding a fault in springscene itself).
+    """
     tbe = traceback.TracebackException.from_exception(exc)
+    if os.environ.get("SPRINGSCENE_DEBUG"):
+        return "".join(tbe.format()).rstrip("\n")
 
     def strip(t: traceback.TracebackException | None, seen: set) -> None:
         if t is None or id(t) in seen:
