@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import importlib
 import os
-import time
 from html.parser import HTMLParser
 from pathlib import Path
 
@@ -231,25 +230,22 @@ def test_write_images_at_each_graphs_size(tmp_path):
     assert [Image.open(p).size for p in paths] == [(640, 400), (300, 200)]
 
 
-def test_graph_strip_stacks_graphs_and_is_quick():
+def test_graph_strip_stacks_graphs():
     g1, c = sine_graph()
     G.graph(title="bars")
     bars = G.gvbars(color=GREEN)
     strip = G.GraphStrip(G.graphs(), 640)
     assert strip.size == (640, 480)
-    frames, times = [], []
+    frames = []
     for i in range(120):
         c.plot(6 + i * 0.05, np.cos(i * 0.05))
         if i % 10 == 0:
             bars.plot(i / 10, i % 4)
-        t0 = time.perf_counter()
         frames.append(strip.draw())
-        times.append(time.perf_counter() - t0)
     assert frames[-1].shape == (480, 640, 3) and frames[-1].dtype == np.uint8
     assert count_color(frames[-1][:240], (255, 0, 0)) > 300          # top: the curve
     assert count_color(frames[-1][240:], (127, 255, 127), tol=25) > 300   # bottom: bars
     assert not np.array_equal(frames[5], frames[-1])
-    assert np.median(times) < 0.05          # blitted frames take a few ms
     assert G.GraphStrip([], 640).size == (640, 0)
 
 

@@ -11,7 +11,9 @@ import pytest
 
 from springscene import config, physics
 from springscene.vpython import vmath
-from springscene.vpython import vector as V
+import importlib
+
+V = importlib.import_module("springscene.vpython.vector")   # the module (the package exports the class)
 from springscene.vpython.vector import (as_vector, comp, cross, diff_angle, dot, hat, mag,
                                         mag2, norm, proj, rotate, vec, vector)
 

@@ -179,9 +179,7 @@ def _mesh(kind: str, obj):
         if len(p) < 2:
             return None
         mesh = shapes.tube(p, rad)
-        rgb = _rgb(np.repeat(col, len(mesh.points) // len(p), axis=0)) \
-            if len(mesh.points) % len(p) == 0 else \
-            np.repeat(_rgb(col[:1]), len(mesh.points), axis=0)
+        rgb = _rgb(col)[shapes.tube_vertex_points(len(p))]
         return mesh.points, mesh.normals, mesh.triangles, rgb
     elif kind == "sphere-points":
         p, col, rad = obj._arrays()

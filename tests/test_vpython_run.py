@@ -1,0 +1,375 @@
+"""VPython programs run headless: the wiki program against the engine, the clock,
+objects and their links, the batched renderer, errors, and the examples' pictures."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+from fractions import Fraction
+
+import imageio.v3 as iio
+import numpy as np
+import pytest
+
+from conftest import BASELINES, ROOT, WIKI, run_cli
+from imagecompare import check, compare
+from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF
+from springscene import camera, config, render
+from springscene.vpython import runtime
+from springscene.vpython.runner import run_program
+
+EXAMPLES = ROOT / "examples"
+VP_BASELINES = BASELINES / "vpython"
+
+
+def write(tmp_path, source: str, name: str = "prog.py"):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source))
+    return path
+
+
+def ball_of(cv_index: int = 0):
+    from springscene.vpython.canvas import canvas
+
+    return next(o for o in canvas._all[cv_index]._objects if o._kind == "sphere")
+
+
+# ---- the wiki program --------------------------------------------------------------------
+
+def test_wiki_program_follows_simulate_bit_for_bit(tmp_path):
+    seen = []
+    result = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", frames=50,
+                         on_frame=lambda i, img: seen.append(ball_of().pos.value))
+    assert (result.frames, result.ended) == (50, "frames")
+    traj = render.simulate(config.load(WIKI), 1.0)
+    expected = traj.pos[2 * np.arange(50)]          # rate(100) at 50 frames/s: every 2nd step
+    assert np.array_equal(np.array(seen), expected)  # exact, not approximate
+
+
+def test_wiki_program_frames_match_render(tmp_path):
+    """Frames at t = 0 and 0.25 s against the baselines `springscene still` renders."""
+    images = []
+    run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", frames=2, fps=4,
+                on_frame=lambda i, img: images.append(img))
+    for image, name in zip(images, ("wiki_t0.00.png", "wiki_t0.25.png")):
+        bad, mean = compare(image, iio.imread(BASELINES / name)[..., :3])
+        assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (name, bad, mean)
+
+
+def test_wiki_program_writes_video_and_page(tmp_path):
+    proc = run_cli("vpython", EXAMPLES / "wiki_spring.py", "--out", tmp_path / "wiki.mp4",
+                   "--duration", "0.5", check=True)
+    assert "wrote" in proc.stdout
+    import imageio_ffmpeg
+
+    reader = imageio_ffmpeg.read_frames(str(tmp_path / "wiki.mp4"))
+    meta = next(reader)
+    assert meta["size"] == (900, 600) and meta["fps"] == 50
+    assert sum(1 for _ in reader) == 25
+    page = (tmp_path / "page.html").read_text()
+    assert "<title>Ball and Spring Model of Matter</title>" in page
+    assert 'src="wiki.mp4"' in page and "&lt;0, -9.8, 0&gt;" in page
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "wiki.mp4"]
+
+
+# ---- the clock ---------------------------------------------------------------------------
+
+def clock(fps=50, max_frames=None):
+    taken = []
+    tl = runtime.Timeline(fps, max_frames, lambda: taken.append(tl.clock))
+    return tl, taken
+
+
+def test_rate_takes_a_frame_on_every_call_whose_span_holds_a_frame_time():
+    tl, taken = clock(50)
+    runtime.start(tl)
+    try:
+        for _ in range(100_000):              # 1000 program seconds of rate(100)
+            runtime.rate(100)
+    finally:
+        runtime.start(None)
+    assert tl.clock == 1000 and len(taken) == 50_000
+    assert taken[:3] == [0, Fraction(2, 100), Fraction(4, 100)]
+    assert taken[-1] == Fraction(49_999, 50)   # exact after 100,000 calls
+
+
+def test_slow_rate_and_sleep_repeat_the_scene():
+    tl, taken = clock(50)
+    runtime.start(tl)
+    try:
+        runtime.rate(10)          # shows for 0.1 s: 5 frames of this state
+        runtime.sleep(0.04)       # 2 more
+    finally:
+        runtime.start(None)
+    assert len(taken) == 7 and taken == [0, 0, 0, 0, 0, Fraction(1, 10), Fraction(1, 10)]
+
+
+def test_the_last_frame_stops_the_program():
+    tl, taken = clock(50, max_frames=3)
+    runtime.start(tl)
+    try:
+        with pytest.raises(runtime.Stop):
+            while True:
+                runtime.rate(100)
+    finally:
+        runtime.start(None)
+    assert len(taken) == 3 and tl.calls == 5
+
+
+def test_rate_below_one_is_vpythons_error():
+    with pytest.raises(ValueError, match="greater than or equal to 1"):
+        runtime.rate(0.5)
+
+
+def test_program_without_rate_is_one_frame_and_png_is_the_end(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere(color=color.red)
+        b.pos = vector(1, 0, 0)
+    """)
+    r = run_program(prog, tmp_path / "a.mp4", page=False)
+    assert (r.frames, r.ended) == (1, "program")
+    r = run_program(prog, tmp_path / "a.png", page=False)
+    img = iio.imread(tmp_path / "a.png")
+    assert img.shape == (400, 640, 3) and r.frames == 1
+    red = (img[..., 0] > 100) & (img[..., 1] < 60)
+    cols = np.nonzero(red)[1]
+    assert cols.mean() > 320 + 20              # moved right of centre: the final scene
+
+
+def test_a_program_that_ends_ends_the_video(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        for i in range(30):
+            rate(100)
+            b.pos.x = b.pos.x + 0.01
+    """)
+    r = run_program(prog, tmp_path / "a.gif", page=False)
+    assert (r.frames, r.ended) == (15, "program")
+    assert r.program_seconds == pytest.approx(0.30)
+
+
+# ---- objects: VPython's links between attributes -----------------------------------------
+
+@pytest.fixture
+def vp():
+    import springscene.vpython as vp
+
+    vp.reset()
+    return vp
+
+
+def test_sizes_radii_and_axes(vp):
+    s = vp.sphere(radius=0.5)
+    assert s.size.value == [1, 1, 1]
+    s.axis = vp.vector(0, 3, 0)               # a sphere's axis leaves its size
+    assert s.size.value == [1, 1, 1] and s.radius == 0.5
+    c = vp.cylinder(axis=vp.vector(0, 2, 0), radius=0.1)
+    assert c.length == 2 and c.size.value == [2, 0.2, 0.2]
+    c.length = 4
+    assert c.axis.value == [0, 4, 0]
+    c.size = vp.vector(1, 0.5, 0.5)
+    assert c.axis.value == [0, 1, 0] and c.radius == 0.25
+    c.axis.y = 3                               # in place: the length follows
+    assert c.length == 3
+    b = vp.box(length=2, height=3, width=4)
+    assert b.size.value == [2, 3, 4] and b.axis.value == [2, 0, 0]
+    r = vp.ring(radius=1, thickness=0.1)
+    assert r.size.value == pytest.approx([0.2, 2.2, 2.2]) and r.radius == pytest.approx(1)
+    a = vp.arrow(axis=vp.vector(0, 0, 2))
+    assert a.length == 2 and a.shaftwidth == 0
+    h = vp.helix(radius=0.015)
+    assert h.coils == 5 and h.thickness == pytest.approx(0.0015)
+
+
+def test_up_turns_with_the_axis_as_in_vpython(vp):
+    h = vp.helix(axis=vp.vector(0, -0.2, 0))    # a hanging spring from the default axis
+    assert h.up.value == pytest.approx([1, 0, 0], abs=1e-15)
+    h.axis = vp.vector(0, -0.25, 0)            # already square to up: unchanged
+    assert h.up.value == pytest.approx([1, 0, 0], abs=1e-15)
+
+
+def test_user_attributes_clone_and_rotate(vp):
+    ball = vp.sphere(pos=vp.vector(1, 0, 0), mass=2.0, color=vp.color.orange)
+    ball.p = vp.vector(0, 1, 0)
+    assert ball.mass == 2.0 and ball.p.y == 1
+    twin = ball.clone(pos=vp.vector(0, 2, 0))
+    assert twin.color.value == [1, 0.6, 0] and twin.pos.value == [0, 2, 0]
+    assert not hasattr(twin, "mass")               # VPython copies only what it draws
+    ball.rotate(angle=math.pi / 2, axis=vp.vector(0, 0, 1), origin=vp.vector(0, 0, 0))
+    assert ball.pos.value == pytest.approx([0, 1, 0], abs=1e-15)
+
+
+def test_in_place_changes_mark_the_object(vp):
+    ball = vp.sphere()
+    ball._dirty = False
+    ball.pos.x = 2
+    assert ball._dirty and ball.pos.x == 2
+    ball._dirty = False
+    ball.color.y = 0.5
+    assert ball._dirty
+
+
+def test_trails_and_curves(vp):
+    ball = vp.sphere(make_trail=True, retain=3)
+    for x in range(5):
+        ball.pos = vp.vector(x, 0, 0)
+    assert [p["pos"].x for p in ball._trail._pts] == [2, 3, 4]
+    c = vp.curve(vp.vector(0, 0, 0), vp.vector(1, 0, 0))
+    c.append(pos=vp.vector(2, 0, 0), color=vp.color.red)
+    c.append([vp.vector(3, 0, 0), vp.vector(4, 0, 0)])
+    assert c.npoints == 5 and c.point(2)["color"].value == [1, 0, 0]
+    c.modify(0, y=1)
+    assert c.point(0)["pos"].value == [0, 1, 0]
+    with pytest.raises(AttributeError):
+        c.pos
+
+
+def test_unsupported_features_name_themselves(vp):
+    with pytest.raises(vp.UnsupportedError, match="texture"):
+        vp.sphere(texture="wood")
+    with pytest.raises(vp.UnsupportedError, match="textures.wood"):
+        vp.textures.wood
+    with pytest.raises(AttributeError, match="extrusion"):
+        vp.extrusion
+
+
+def test_canvas_defaults_and_camera(vp):
+    s = vp.scene
+    assert (s.width, s.height, s.fov) == (640, 400, math.pi / 3)
+    assert s.background.value == [0, 0, 0] and s.ambient.value == pytest.approx([0.2] * 3)
+    assert [lt.color.value for lt in s.lights] == [pytest.approx([0.8] * 3),
+                                                   pytest.approx([0.3] * 3)]
+    s.range = 2
+    assert not s.autoscale
+    assert s.camera.pos.value == pytest.approx([0, 0, 2 * math.sqrt(3)])
+    s.camera.pos = vp.vector(1, 0, 5)
+    assert s.center.value == pytest.approx([1, 0, 5 - 2 * math.sqrt(3)])
+
+
+# ---- the renderer ------------------------------------------------------------------------
+
+def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
+    from springscene.vpython.draw import Renderer
+
+    balls = [vp.sphere(pos=vp.vector(i % 10, i // 10 % 10, i // 100), radius=0.3,
+                       color=vp.color.red) for i in range(1000)]
+    r = Renderer(vp.scene)
+    try:
+        first = r.frame()
+        actors = list(r.plotter.renderer.actors.values())
+        spheres = [b for key, b in r._batches.items() if key[0] == "sphere"]
+        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000 * len(
+            spheres[0].mesh.points) // 1000
+        mesh = spheres[0].mesh
+        mtime = mesh.GetPoints().GetMTime()
+        r.frame()                                       # nothing moved: nothing rewritten
+        assert mesh.GetPoints().GetMTime() == mtime
+        for b in balls:
+            b.pos = b.pos + vp.vector(0, 0, 0.5)
+        r.frame()
+        assert spheres[0].mesh is mesh and mesh.GetPoints().GetMTime() > mtime
+        assert list(r.plotter.renderer.actors.values()) == actors     # no actor added
+        assert first.shape == (400, 640, 3)
+    finally:
+        r.close()
+
+
+def test_autoscale_and_projection_put_objects_where_vpython_does(vp):
+    from springscene.vpython.draw import Renderer
+
+    vp.scene.background = vp.color.white
+    vp.sphere(pos=vp.vector(2, 1, 0), radius=0.1, color=vp.color.red)   # small: a dot
+    vp.box(pos=vp.vector(-1, -1, 0), size=vp.vector(0.5, 0.5, 0.5), color=vp.color.blue)
+    r = Renderer(vp.scene)
+    try:
+        img = r.frame()
+        bounds = np.array([[[1.9, 0.9, -0.1], [2.1, 1.1, 0.1]],
+                           [[-1.25, -1.25, -0.25], [-0.75, -0.75, 0.25]]])
+        assert vp.scene.range == pytest.approx(
+            camera.autoscale_range(bounds, (0, 0, 0), math.pi / 3, 640, 400))
+        rgb = img.astype(int)
+        red = (rgb[..., 0] - rgb[..., 1] > 30) & (rgb[..., 0] - rgb[..., 2] > 30)  # lit or not
+        rows, cols = np.nonzero(red)
+        col, row = r.view.project(np.array([2.0, 1.0, 0.0]))
+        assert abs((cols.min() + cols.max() + 1) / 2 - col) < 1.5
+        assert abs((rows.min() + rows.max() + 1) / 2 - row) < 1.5
+    finally:
+        r.close()
+
+
+# ---- errors ------------------------------------------------------------------------------
+
+def test_program_error_is_its_own_traceback_exit_1(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        ball = sphere()
+        v = ball.pos + 1
+    """)
+    out = tmp_path / "x.mp4"
+    proc = run_cli("vpython", prog, "--out", out)
+    assert proc.returncode == 1
+    assert f'File "{prog}", line 4, in <module>' in proc.stderr
+    assert "TypeError" in proc.stderr and "springscene" not in proc.stderr
+    assert not out.exists() and not list(tmp_path.glob(".x.mp4*"))
+
+
+def test_syntax_error_and_exit_status(tmp_path):
+    proc = run_cli("vpython", write(tmp_path, "from vpython import *\nwhile True\n"),
+                   "--out", tmp_path / "x.mp4")
+    assert proc.returncode == 1 and "SyntaxError" in proc.stderr and "line 2" in proc.stderr
+    proc = run_cli("vpython", write(tmp_path, "import sys\nsys.exit(3)\n", "e.py"),
+                   "--out", tmp_path / "x.mp4")
+    assert proc.returncode == 1 and "status 3" in proc.stderr
+
+
+@pytest.mark.parametrize("args, message", [
+    (["missing.py", "--out", "{tmp}/x.mp4"], "no such program file"),
+    (["{prog}", "--out", "{tmp}/x.txt"], "unknown output format"),
+    (["{prog}", "--out", "{tmp}/x.mp4", "--duration", "1", "--frames", "3"], "not allowed with"),
+    (["{prog}", "--out", "{tmp}/x.mp4", "--fps", "0"], "--fps 0"),
+    (["{prog}", "--out", "{tmp}/x.mp4", "--duration", "-1"], "--duration -1"),
+    (["{prog}", "--out", "{tmp}/x.mp4", "--overlay", "energy"], "unknown overlay"),
+    (["{prog}", "--out", "{tmp}/x.gif", "--fps", "60"], "GIF"),
+])
+def test_bad_flags_are_one_line_exit_2(tmp_path, args, message):
+    prog = write(tmp_path, "from vpython import *\nsphere()\n")
+    args = [a.format(tmp=tmp_path, prog=prog) for a in args]
+    proc = run_cli("vpython", *args)
+    assert proc.returncode == 2, proc.stderr
+    assert message in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+    assert not list(tmp_path.glob("x.*"))
+
+
+def test_interaction_runs_without_a_user(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        def setk(s):
+            raise RuntimeError("never called")
+        k = slider(bind=setk, min=1, max=30, value=15)
+        button(bind=setk, text="Run")
+        scene.bind("click", setk)
+        ev = scene.waitfor("click")
+        scene.caption = f"k = {k.value}"
+        sphere()
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png", check=True)
+    assert "slider" in proc.stderr and "waitfor" in proc.stderr and "bind" in proc.stderr
+    page = (tmp_path / "page.html").read_text()
+    assert "k = 15" in page and "disabled" in page
+
+
+# ---- the examples, against baselines -----------------------------------------------------
+
+EXAMPLE_STILLS = [("projectile", None), ("bounce", 1.5), ("lattice", 0.3),
+                  ("spring_graph", 1.0)]
+
+
+@pytest.mark.parametrize("name, duration", EXAMPLE_STILLS, ids=[n for n, _ in EXAMPLE_STILLS])
+def test_example_stills(tmp_path, regen, name, duration):
+    r = run_program(EXAMPLES / f"{name}.py", tmp_path / f"{name}.png", duration=duration)
+    check(iio.imread(tmp_path / f"{name}.png"), VP_BASELINES / f"{name}.png", regen)
+    for image in r.images:                      # graphs: matplotlib, pinned, deterministic
+        check(iio.imread(image)[..., :3], VP_BASELINES / image.name, regen)
+    assert r.page is not None and r.page.exists()
