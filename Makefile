@@ -40,6 +40,7 @@ test: setup
 bench: setup
 	$(BIN)/python benchmarks/bench_render.py
 	$(BIN)/python benchmarks/bench_physics.py
+	$(BIN)/python benchmarks/bench_vpython.py
 
 baselines: setup
 	$(BIN)/python -m pytest tests/test_render.py tests/test_figures.py tests/test_overlay.py --regen-baselines

@@ -29,6 +29,8 @@ from . import shapes
 TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
              "cylinder": (shapes.cylinder, True), "cone": (shapes.cone, True),
              "pyramid": (shapes.pyramid, True)}
+# level of detail: (slices, smallest on-screen radius in px that gets them)
+SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
 LINE_WIDTH = 2            # px: a curve of radius 0 (VPython draws a thin line)
 POINT_RADIUS = 2.5        # px: points of radius 0
 _TAGS = re.compile(r"<[^>]*>")
@@ -132,11 +134,25 @@ _TEMPLATES: dict = {}
 _TUBES: dict[tuple, HelixTube] = {}
 
 
-def template(kind: str) -> shapes.Mesh:
-    """The unit mesh of a template kind, made once."""
-    if kind not in _TEMPLATES:
-        _TEMPLATES[kind] = TEMPLATES[kind][0]()
-    return _TEMPLATES[kind]
+def template(kind: str, slices: int | None = None) -> shapes.Mesh:
+    """The unit mesh of a template kind (a sphere of ``slices``), made once."""
+    key = (kind, slices)
+    if key not in _TEMPLATES:
+        _TEMPLATES[key] = shapes.sphere(slices) if slices else TEMPLATES[kind][0]()
+    return _TEMPLATES[key]
+
+
+def sphere_slices(radius_px: float) -> int:
+    """Slices for a sphere drawn ``radius_px`` pixels across its radius.
+
+    VPython's 30 x 30 from 24 px up (the wiki's ball is about 40 px); fewer for
+    smaller ones, whose facets are below a pixel anyway: a thousand small atoms
+    are then a few hundred thousand vertices, not 840,000.
+    """
+    for slices, px in SPHERE_LOD:
+        if radius_px >= px:
+            return slices
+    return SPHERE_LOD[-1][0]
 
 
 def object_mesh(obj):
@@ -339,19 +355,34 @@ class Renderer:
             self._draw_meshes(batch, key, meshes, style)
 
     def _draw_templates(self, batch, key, objs, style) -> None:
-        template_ = template(key[0])
         anchored = TEMPLATES[key[0]][1]
         pos, R, size, color = _frames(objs)
+        slices = self._sphere_slices(pos, size) if key[0] == "sphere" else None
+        template_ = template(key[0], slices)
         points, normals = shapes.place(template_, pos, R, size)
         n = len(template_.points)
         colors = np.repeat(_rgb(color), n, axis=0)
-        cells = shapes.vtk_cells(shapes.tile(template_.triangles, n, len(objs)))
-        batch.set(points, normals, colors, cells, ("tmpl", len(objs)), style)
+        signature = ("tmpl", len(objs), slices)
+        cells = None if signature == batch.signature else \
+            shapes.vtk_cells(shapes.tile(template_.triangles, n, len(objs)))
+        batch.set(points, normals, colors, cells, signature, style)
         # bounds: the object's oriented box
         half = np.abs(R) @ (size[:, :, None] / 2)
         centre = pos + (R[:, :, 0] * size[:, :1] / 2 if anchored else 0)
         half = half[:, :, 0]
         self._bounds[key] = np.stack([centre - half, centre + half], axis=1)
+
+    def _sphere_slices(self, pos: np.ndarray, size: np.ndarray) -> int:
+        """Level of detail for a batch of spheres: enough for the largest on screen."""
+        v = self.view
+        if v is None:
+            return shapes.SPHERE_SLICES
+        fwd = v.focal_point - v.position
+        fwd = fwd / np.linalg.norm(fwd)
+        depth = np.maximum((pos - v.position) @ fwd, v.near)
+        px_per_unit = (v.height / 2) / math.tan(v.fov / 2)
+        radius_px = float(np.max(size.max(axis=1) / 2 / depth)) * px_per_unit
+        return sphere_slices(radius_px)
 
     def _draw_meshes(self, batch, key, meshes, style) -> None:
         if not meshes:
