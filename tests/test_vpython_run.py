@@ -231,8 +231,10 @@ def test_unsupported_features_name_themselves(vp):
         vp.sphere(texture="wood")
     with pytest.raises(vp.UnsupportedError, match="textures.wood"):
         vp.textures.wood
-    with pytest.raises(AttributeError, match="extrusion"):
-        vp.extrusion
+    with pytest.raises(vp.UnsupportedError, match="extrusion"):
+        vp.extrusion(path=[], shape=[])
+    with pytest.raises(AttributeError, match="no_such_thing"):
+        vp.no_such_thing
 
 
 def test_canvas_defaults_and_camera(vp):
@@ -260,8 +262,7 @@ def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
         first = r.frame()
         actors = list(r.plotter.renderer.actors.values())
         spheres = [b for key, b in r._batches.items() if key[0] == "sphere"]
-        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000 * len(
-            spheres[0].mesh.points) // 1000
+        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000 * 842   # 30 x 30
         mesh = spheres[0].mesh
         mtime = mesh.GetPoints().GetMTime()
         r.frame()                                       # nothing moved: nothing rewritten
@@ -270,6 +271,8 @@ def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
             b.pos = b.pos + vp.vector(0, 0, 0.5)
         r.frame()
         assert spheres[0].mesh is mesh and mesh.GetPoints().GetMTime() > mtime
+        # a few pixels across: fewer slices (level of detail), still one mesh
+        assert mesh.n_points % 1000 == 0 and mesh.n_points < 1000 * 842
         assert list(r.plotter.renderer.actors.values()) == actors     # no actor added
         assert first.shape == (400, 640, 3)
     finally:
@@ -373,3 +376,100 @@ def test_example_stills(tmp_path, regen, name, duration):
     for image in r.images:                      # graphs: matplotlib, pinned, deterministic
         check(iio.imread(image)[..., :3], VP_BASELINES / image.name, regen)
     assert r.page is not None and r.page.exists()
+
+
+# ---- what the review found ---------------------------------------------------------------
+
+def test_compound_keeps_its_parts_size_and_turns_without_resizing(vp):
+    from springscene.vpython.draw import object_mesh
+
+    c = vp.compound([vp.box(size=vp.vector(2, 0.3, 0.3)),
+                     vp.sphere(pos=vp.vector(1, 0, 0), radius=0.3)])
+    assert c.size.value == pytest.approx([2.3, 0.6, 0.6], abs=0.01)   # the sphere is facets
+    points = object_mesh(c)[0]
+    assert points.min(axis=0) == pytest.approx([-1, -0.3, -0.3], abs=0.005)
+    assert points.max(axis=0) == pytest.approx([1.3, 0.3, 0.3], abs=0.005)
+    c.axis = vp.vector(0, 0, 1)
+    assert c.size.value == pytest.approx([2.3, 0.6, 0.6], abs=0.01)
+    assert np.ptp(object_mesh(c)[0], axis=0) == pytest.approx([0.6, 0.6, 2.3], abs=0.005)
+
+
+def test_up_and_rotate_move_axis_and_up_together(vp):
+    b = vp.box()
+    b.up = vp.vector(1, 1, 0)                 # not square to the axis: the axis turns
+    assert b.axis.dot(b.up) == pytest.approx(0, abs=1e-12)
+    b = vp.box()
+    b.rotate(angle=math.pi, axis=vp.vector(0, 0, 1))
+    assert b.axis.value == pytest.approx([-1, 0, 0], abs=1e-12)
+    assert b.up.value == pytest.approx([0, -1, 0], abs=1e-12)
+
+
+def test_trail_off_and_on_starts_a_new_trail(vp):
+    ball = vp.sphere(make_trail=True)
+    ball.pos = vp.vector(1, 0, 0)
+    first = ball._trail
+    ball.make_trail = False
+    ball.pos = vp.vector(0, 5, 0)
+    ball.make_trail = True
+    ball.pos = vp.vector(1, 5, 0)
+    assert [p["pos"].value for p in first._pts] == [[0, 0, 0], [1, 0, 0]]
+    assert [p["pos"].value for p in ball._trail._pts] == [[0, 5, 0], [1, 5, 0]]
+
+
+def test_no_lights_is_ambient_only_and_ambient_changes_show(vp):
+    from springscene.vpython.draw import Renderer
+
+    vp.scene.lights = []
+    vp.box(size=vp.vector(4, 4, 0.1), color=vp.color.red)
+    r = Renderer(vp.scene, antialias=False)
+    try:
+        assert tuple(r.frame()[200, 320]) == pytest.approx((51, 0, 0), abs=2)   # 0.2 * 255
+        vp.scene.ambient = vp.color.gray(0.6)
+        assert tuple(r.frame()[200, 320]) == pytest.approx((153, 0, 0), abs=2)
+    finally:
+        r.close()
+
+
+def test_cleared_and_deleted_objects_leave_the_picture(vp):
+    from springscene.vpython.draw import Renderer
+
+    vp.scene.background = vp.color.white
+    c = vp.curve(vp.vector(-1, 0, 0), vp.vector(1, 0, 0), color=vp.color.red, radius=0.1)
+    s = vp.sphere(pos=vp.vector(0, 1, 0), radius=0.3, color=vp.color.blue)
+    vp.box(pos=vp.vector(0, -1, 0), size=vp.vector(0.1, 0.1, 0.1))      # keeps the range
+    r = Renderer(vp.scene)
+    try:
+        img = r.frame().astype(int)
+        assert ((img[..., 0] - img[..., 2]) > 100).any() and ((img[..., 2] - img[..., 0]) > 100).any()
+        c.clear()
+        s.delete()
+        img = r.frame().astype(int)
+        assert not ((img[..., 0] - img[..., 2]) > 100).any()       # no red
+        assert not ((img[..., 2] - img[..., 0]) > 100).any()       # no blue
+    finally:
+        r.close()
+
+
+def test_waits_in_a_loop_end_with_the_video(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        while True:
+            ev = scene.waitfor("click")
+            sphere(pos=ev.pos)
+    """)
+    r = run_program(prog, tmp_path / "x.mp4", duration=0.2, page=False)
+    assert (r.frames, r.ended) == (10, "duration")
+
+
+def test_visual_and_module_imports_and_a_second_run_reimports_local_modules(tmp_path):
+    write(tmp_path, "from vpython import *\nscene.background = color.white\n", "look.py")
+    prog = write(tmp_path, """
+        import look
+        from visual import *
+        import vpython as vp
+        ball = vp.sphere(color=color.red)
+        display  # VPython 6's name for a canvas
+    """)
+    for _ in range(2):
+        run_program(prog, tmp_path / "x.png", page=False)
+        assert tuple(iio.imread(tmp_path / "x.png")[5, 5]) == (255, 255, 255)

@@ -45,6 +45,20 @@ class _Refused:
 
 textures = _Refused("textures")
 bumpmaps = _Refused("bumpmaps")
+paths = _Refused("paths")
+
+
+def _refuse(name: str):
+    def refused(*args, **kwargs):
+        raise UnsupportedError(f"{name} is not supported by springscene's vpython")
+    refused.__name__ = name
+    return refused
+
+
+# VPython 7 objects springscene does not draw: named, so a program fails saying which
+REFUSED = ("triangle", "quad", "vertex", "extrusion", "text", "attach_arrow", "attach_trail")
+for _name in REFUSED:
+    globals()[_name] = _refuse(_name)
 scene: canvas        # set by reset()
 
 
@@ -76,7 +90,7 @@ _OURS = ["vector", "vec", "mag", "mag2", "norm", "hat", "dot", "cross", "proj", 
          "ring", "ellipsoid", "curve", "points", "label", "compound", "local_light",
          "distant_light", "graph", "gcurve", "gdots", "gvbars", "ghbars",
          "button", "slider", "menu", "checkbox", "radio", "winput", "wtext",
-         "textures", "bumpmaps", "keysdown", "version", "get_library"]
+         "textures", "bumpmaps", "paths", "keysdown", "version", "get_library", *REFUSED]
 __all__ = list(dict.fromkeys(_OURS + list(vmath.__all__)))
 
 reset()

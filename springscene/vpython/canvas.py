@@ -112,9 +112,19 @@ class _Camera:
         self._cv._follow = obj
 
     def rotate(self, angle: float, axis=None, origin=None) -> None:
+        """Turn the camera where it stands (VPython: pos fixed, axis and up turn)."""
         cv = self._cv
         axis = cv.up if axis is None else _vec(axis, "axis")
-        cv._forward = cv.forward.rotate(angle, axis)
+        pos, view = self.pos, self.axis
+        if origin is not None:
+            origin = _vec(origin, "origin")
+            pos = origin + (pos - origin).rotate(angle, axis)
+        view = view.rotate(angle, axis)
+        cv._autoscale = False
+        cv._range = cv._range_now()
+        cv._forward = view.norm()
+        cv._up = cv.up.rotate(angle, axis)
+        cv._center = pos + view
 
 
 class _Mouse:
@@ -308,12 +318,23 @@ class canvas:
         pass
 
     def waitfor(self, events: str, *args) -> _Event:
-        widgets.skipped(f"scene.waitfor({events!r}): returned at once")
+        """No user: the event comes one video frame later (so a loop of waits still ends)."""
+        from . import runtime
+
+        widgets.skipped(f"scene.waitfor({events!r}): returned after one frame")
+        runtime.wait()
         return _Event(self, events.split()[0] if events.split() else events)
 
     def pause(self, *args) -> _Event:
-        widgets.skipped("scene.pause(): returned at once")
+        from . import runtime
+
+        widgets.skipped("scene.pause(): returned after one frame")
+        runtime.wait()
         return _Event(self, "click")
+
+    def follow(self, obj) -> None:
+        """Keep ``obj`` at the centre of the view (VPython's ``scene.follow``)."""
+        self._follow = obj
 
     def capture(self, filename: str, *args) -> None:
         """Save the canvas as ``filename`` (.png added) beside the output, at this moment."""

@@ -22,7 +22,7 @@ import numpy as np
 
 from .. import backend, camera
 from ..geometry import HelixTube
-from ..scene import AMBIENT, MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, grab, title_color
+from ..scene import MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, grab, title_color
 from . import shapes
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
@@ -61,6 +61,7 @@ class _Batch:
 
     def set(self, points, normals, colors, cells, signature, style) -> None:
         """New geometry: in place when the topology (``signature``) is unchanged."""
+        self.empty = False
         if signature == self.signature and self.actor is not None:
             self.mesh.points[:] = points
             self.mesh.GetPoints().Modified()
@@ -111,13 +112,25 @@ class _Batch:
             prop.SetPointSize(style["point_px"])
             prop.LightingOff()
 
+    empty = False        # nothing to draw (a cleared curve, a zero-length helix)
+
     def hide(self) -> None:
+        self.empty = True
         if self.actor is not None:
             self.actor.SetVisibility(False)
 
     def show(self) -> None:
-        if self.actor is not None:
+        if self.actor is not None and not self.empty:
             self.actor.SetVisibility(True)
+
+    def restyle(self, style: dict) -> None:
+        if self.actor is not None:
+            self._style(style)
+
+    def remove(self) -> None:
+        if self.actor is not None:
+            self.plotter.remove_actor(self.actor)
+            self.actor = None
 
 
 def _frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -132,6 +145,7 @@ def _frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
 
 _TEMPLATES: dict = {}
 _TUBES: dict[tuple, HelixTube] = {}
+MAX_CACHED_TUBES = 256
 
 
 def template(kind: str, slices: int | None = None) -> shapes.Mesh:
@@ -186,8 +200,8 @@ def _mesh(kind: str, obj):
         mesh = shapes.ring(obj.radius, obj.thickness)
         scale = np.ones((1, 3))
     elif kind == "compound":
-        mesh = obj._mesh
-        scale = np.array([obj._size._xyz()]) / obj._size0
+        mesh = obj._mesh                  # unit-sized at construction: scale by size
+        scale = np.array([obj._size._xyz()])
         points, normals = shapes.place(mesh, pos, R, scale)
         return points, normals, mesh.triangles, obj._vertex_rgb()
     elif kind == "tube":
@@ -219,6 +233,8 @@ def _helix(obj):
     key = (radius, thickness, float(obj._coils), bool(obj._ccw))
     tube = _TUBES.get(key)
     if tube is None:
+        if len(_TUBES) > MAX_CACHED_TUBES:       # an animated radius or coils
+            _TUBES.clear()
         tube = _TUBES[key] = HelixTube(radius, thickness, obj._coils, obj._ccw)
         tube.triangles = _quads_to_triangles(tube.faces())
     axis = np.array(obj._axis._xyz())
@@ -251,7 +267,9 @@ class Renderer:
         self.width, self.height = int(cv.width), int(cv.height)
         pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
         pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
+        pl.renderer.AutomaticLightCreationOff()     # scene.lights = [] means no light
         self.plotter = pl
+        self._ambient = None
         self._batches: dict[tuple, _Batch] = {}
         self._labels: dict[int, object] = {}
         self._lights_sig = None
@@ -290,10 +308,9 @@ class Renderer:
             else:
                 key = (kind, float(obj._opacity), float(obj._shininess), bool(obj._emissive))
             groups[key].append(obj)
-        for key, batch in self._batches.items():
-            if key not in groups:
-                batch.hide()
-                self._bounds.pop(key, None)
+        for key in [k for k in self._batches if k not in groups]:   # e.g. a faded opacity
+            self._batches.pop(key).remove()
+            self._bounds.pop(key, None)
         for key, objs in groups.items():
             batch = self._batches.get(key)
             if batch is None:
@@ -308,6 +325,12 @@ class Renderer:
             batch.show()
             for o in objs:
                 o._dirty = False
+        ambient = tuple(self.cv.ambient.value)
+        if ambient != self._ambient:
+            if self._ambient is not None:
+                for key, batch in self._batches.items():
+                    batch.restyle(self._style(key))
+            self._ambient = ambient
         self._sync_background()
         self._sync_lights()
         self._sync_title()
@@ -452,11 +475,16 @@ class Renderer:
                 light.positional = True
                 light.cone_angle = 180
             self.plotter.add_light(light)
+        if not sig:        # VTK draws unlit with no light at all; VPython then shows ambient
+            dark = pv.Light(position=(0, 0, 1), color=(0, 0, 0), light_type="scene light")
+            dark.intensity = 0.0
+            self.plotter.add_light(dark)
         self._lights_sig = sig
 
     def _sync_title(self) -> None:
         text = plain_text(self.cv.title)
-        if text == self._title_text:
+        colour = title_color(self.cv.background.value)
+        if (text, colour) == self._title_text:
             return
         if self._title is not None:
             self.plotter.remove_actor(self._title)
@@ -464,8 +492,8 @@ class Renderer:
         if text:
             self._title = self.plotter.add_text(
                 text, position="upper_edge", font_size=TITLE_FONT_SIZE,
-                color=title_color(self.cv.background.value), name="title")
-        self._title_text = text
+                color=colour, name="title")
+        self._title_text = (text, colour)
 
     def object_bounds(self) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every drawn object, for autoscale."""

@@ -193,9 +193,13 @@ class standard(_Base):
 
     @make_trail.setter
     def make_trail(self, value) -> None:
-        self._make_trail = bool(value)
-        if self._make_trail and not self._constructing and self._trail is None:
+        value = bool(value)
+        if not value:
+            self._trail = None            # the drawn trail stays; a new one starts next time
+        elif not self._make_trail and not self._constructing:
+            self._make_trail = True
             self._add_trail_point()
+        self._make_trail = value
 
     @property
     def trail_type(self) -> str:
@@ -284,9 +288,25 @@ class standard(_Base):
     @up.setter
     def up(self, value) -> None:
         value = _vec(value, "up")
+        old = self._up
         value._on_change = self._touch
         self._up = value
+        if self._adjustupaxis:
+            self._adjust_axis(old, value)
         self._dirty = True
+
+    def _adjust_axis(self, old: vector, new: vector) -> None:
+        """VPython's ``adjust_axis``: turn ``axis`` with ``up`` unless they are already square."""
+        if new.mag2 == 0 or old.mag2 == 0 or new.dot(self._axis) == 0:
+            return
+        angle = old.diff_angle(new)
+        if angle > 1e-6:
+            if abs(angle - math.pi) < 1e-6:
+                axis = -self._axis
+            else:
+                axis = self._axis.rotate(angle=angle, axis=old.cross(new))
+            axis._on_change = self._on_axis_change
+            self._axis = axis
 
     @property
     def size(self) -> vector:
@@ -388,18 +408,15 @@ class standard(_Base):
         if angle is None:
             raise TypeError("You must specify an angle through which to rotate")
         rotaxis = self._axis if axis is None else _vec(axis, "axis")
-        origin = self._pos if origin is None else _vec(origin, "origin")
-        self.pos = origin + (self._pos - origin).rotate(angle, rotaxis)
-        self._adjustupaxis = False
+        if origin is not None:
+            origin = _vec(origin, "origin")
+            new_pos = origin + (self._pos - origin).rotate(angle, rotaxis)
+            if not new_pos.equals(self._pos):
+                self.pos = new_pos
+        self._adjustupaxis = False       # axis and up turn together, rigidly
         try:
-            if self._axis.diff_angle(rotaxis) > 1e-6:
-                if abs(angle - math.pi) < 1e-6:
-                    self.axis = -self._axis
-                else:
-                    self.axis = self._axis.rotate(angle=angle, axis=rotaxis)
-                    self.up = self._up.rotate(angle=angle, axis=rotaxis)
-            else:
-                self.up = self._up.rotate(angle=angle, axis=rotaxis)
+            self.axis = self._axis.rotate(angle=angle, axis=rotaxis)
+            self.up = self._up.rotate(angle=angle, axis=rotaxis)
         finally:
             self._adjustupaxis = True
 
@@ -515,7 +532,8 @@ class helix(_Round):
         self._dirty = True
 
     def _clone_args(self) -> dict:
-        return {**super()._clone_args(), "coils": self._coils, "thickness": self.thickness}
+        return {**super()._clone_args(), "coils": self._coils, "thickness": self.thickness,
+                "ccw": self._ccw}
 
 
 class ring(standard):
@@ -674,6 +692,7 @@ class compound(standard):
     """
 
     _kind = "compound"
+    _axis_sets_size = False          # turning a compound does not resize it
     _INELIGIBLE = ("label", "curve", "points", "helix", "light")
 
     def __init__(self, objList, **args) -> None:

@@ -41,6 +41,7 @@ class ProgramResult:
     program_seconds: float       # the program clock when the run ended
     seconds: float               # wall time
     ended: str                   # "program" (it ended), "duration" or "frames"
+    size: tuple[int, int] | None = None                   # the video's (width, height)
     page: Path | None = None
     images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
     notes: list[str] = field(default_factory=list)        # what ran without a user
@@ -120,6 +121,15 @@ def _install_modules():
     sys.modules["visual"] = visual
     sys.modules["visual.graph"] = visual_graph
     return saved
+
+
+def _forget_program_modules(before: set, folder: Path) -> None:
+    """Unload the modules the program imported from its own folder: a second run in this
+    process imports them afresh (with the new ``scene``)."""
+    for name in set(sys.modules) - before:
+        file = getattr(sys.modules[name], "__file__", None)
+        if file and Path(file).resolve().is_relative_to(folder):
+            del sys.modules[name]
 
 
 def _restore_modules(saved: dict) -> None:
@@ -239,6 +249,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
         saved = _install_modules()
+        modules_before = set(sys.modules)
         saved_argv, saved_path = sys.argv, list(sys.path)
         sys.argv = [str(path)]
         sys.path.insert(0, str(path.resolve().parent))
@@ -265,6 +276,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
             runtime.set_capture(None)
             sys.argv, sys.path[:] = saved_argv, saved_path
             _restore_modules(saved)
+            _forget_program_modules(modules_before, path.resolve().parent)
             if not ok:
                 film.close(False)
         try:
@@ -275,7 +287,8 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
         finally:
             film.close(True)
         result = ProgramResult(out, 1 if still else film.frames, fps, timeline.seconds,
-                               time.perf_counter() - start, ended)
+                               time.perf_counter() - start, ended,
+                               size=film.writer.size if film.writer is not None else None)
     result.images = images + _write_extras(out, result, page, still)
     from . import widgets
 
@@ -300,7 +313,8 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> 
         kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
         result.page = write_page(out.parent / "page.html", title_html=cv.title,
                                  caption_html=cv.caption, media=out.name, media_kind=kind,
-                                 width=int(cv.width), height=int(cv.height),
+                                 width=result.size[0] if result.size else int(cv.width),
+                                 height=result.size[1] if result.size else int(cv.height),
                                  graph_images=[p.name for p in written],
                                  widgets=widgets.widgets_in_order())
     return written

@@ -100,6 +100,12 @@ def sleep(dt) -> None:
         _current.advance(span)
 
 
+def wait() -> None:
+    """A wait for a user who never comes: one video frame of program time passes."""
+    if _current is not None:
+        _current.advance(Fraction(1, _current.fps))
+
+
 _capture: Callable | None = None
 
 
