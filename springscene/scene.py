@@ -53,6 +53,17 @@ def grab(render_window, width: int, height: int, buffer) -> np.ndarray:
     return np.ascontiguousarray(img[::-1])
 
 
+def apply_view(plotter, v: camera.View) -> None:
+    """Place a plotter's camera at a VPython :class:`~springscene.camera.View`."""
+    cam = plotter.renderer.GetActiveCamera()
+    cam.SetPosition(*v.position)
+    cam.SetFocalPoint(*v.focal_point)
+    cam.SetViewUp(*v.up)
+    cam.SetViewAngle(math.degrees(v.fov))
+    cam.SetClippingRange(v.near, v.far)
+    plotter.camera_set = True
+
+
 def title_color(background) -> str:
     """Black text on a light background, white on a dark one."""
     luminance = float(np.dot(background, (0.2126, 0.7152, 0.0722)))
@@ -177,13 +188,7 @@ class Scene:
         if self.view is not None and rng == self._range:
             return
         v = camera.view(c.center, c.forward, c.up, c.fov, rng, w, h)
-        cam = self.plotter.renderer.GetActiveCamera()
-        cam.SetPosition(*v.position)
-        cam.SetFocalPoint(*v.focal_point)
-        cam.SetViewUp(*v.up)
-        cam.SetViewAngle(math.degrees(v.fov))
-        cam.SetClippingRange(v.near, v.far)
-        self.plotter.camera_set = True
+        apply_view(self.plotter, v)
         self.view, self._range = v, rng
 
     def frame(self) -> np.ndarray:

@@ -22,7 +22,8 @@ import numpy as np
 
 from .. import backend, camera
 from ..geometry import HelixTube
-from ..scene import MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, grab, title_color
+from ..scene import (MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, apply_view, grab,
+                     title_color)
 from . import shapes
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
@@ -514,13 +515,7 @@ class Renderer:
         rng = cv._range_now()
         v = camera.view(center, np.array(cv.forward.value), np.array(cv.up.value), cv.fov,
                         rng, w, h)
-        cam = self.plotter.renderer.GetActiveCamera()
-        cam.SetPosition(*v.position)
-        cam.SetFocalPoint(*v.focal_point)
-        cam.SetViewUp(*v.up)
-        cam.SetViewAngle(math.degrees(v.fov))
-        cam.SetClippingRange(v.near, v.far)
-        self.plotter.camera_set = True
+        apply_view(self.plotter, v)
         self.view = v
 
     def _sync_labels(self, labels: list) -> None:
