@@ -41,8 +41,8 @@ def norm(v):
     return v / smag if smag > 0 else vector(0, 0, 0)
 
 
-def wiki_loop(n_steps, ball_pos, ball_p=(0, 0, 0)):
-    """The page's Model 14 loop, line by line."""
+def wiki_loop(n_steps, ball_pos, ball_p=(0, 0, 0), vector=vector, mag=mag, norm=norm):
+    """The page's Model 14 loop, line by line (on any vector type with its mag and norm)."""
     holder_pos = vector(0, 0, 0)
     pos, p = vector(*ball_pos), vector(*ball_p)
     k, L0, m, g, dt = 15, 0.10, 0.10, vector(0, -9.8, 0), 0.01

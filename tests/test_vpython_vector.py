@@ -10,6 +10,7 @@ import numpy as np
 import pytest
 
 from springscene import config, physics
+from test_physics import wiki_loop
 from springscene.vpython import vmath
 import importlib
 
@@ -417,29 +418,12 @@ def test_module_exports():
 CFG = config.load("configs/wiki.toml")
 
 
-def wiki_loop(n_steps, ball_pos, ball_p=(0, 0, 0)):
-    """The page's Model 14 loop, line by line (as tests/test_physics.py), on our vector."""
-    holder_pos = vector(0, 0, 0)
-    pos, p = vector(*ball_pos), vector(*ball_p)
-    k, L0, m, g, dt = 15, 0.10, 0.10, vector(0, -9.8, 0), 0.01
-    out = []
-    for _ in range(n_steps):
-        L = pos - holder_pos
-        Fs = -k * (mag(L) - L0) * norm(L)
-        Fg = m * g
-        Fnet = Fs + Fg
-        p = p + Fnet * dt
-        pos = pos + (p / m) * dt
-        out.append((pos.x, pos.y, pos.z, p.x, p.y, p.z))
-    return np.array(out)
-
-
 @pytest.mark.parametrize("start, p0", [
     ((0, -0.18533333333333335, 0), (0, 0, 0)),
     ((0.03, -0.12, 0.01), (0.002, 0.01, -0.001)),   # a swinging, compressed start
 ])
 def test_wiki_loop_bit_identical_to_physics_engine(start, p0):
-    ref = wiki_loop(2000, start, p0)
+    ref = wiki_loop(2000, start, p0, vector, mag, norm)     # the page's loop, our vectors
     s = config.override(CFG, "ball", pos=start, p=p0).system()
     got = np.empty_like(ref)
     for n in range(len(ref)):
