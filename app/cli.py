@@ -72,8 +72,11 @@ def _build_parser() -> argparse.ArgumentParser:
 
     s = sub.add_parser("render", help="render the oscillation to MP4 or GIF in real time")
     s.add_argument("config")
-    s.add_argument("--duration", type=float, help="simulated (= video) seconds")
+    s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
     s.add_argument("--fps", type=int, help="frames per second (default: the config's)")
+    s.add_argument("--speed", type=float,
+                   help="simulated seconds per video second (default: the config's, "
+                        "1 = real time)")
     s.add_argument("--out", required=True, help="video.mp4 or video.gif")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     s.add_argument("--overlay", default="", metavar="LIST",
@@ -159,7 +162,7 @@ def _run(args: argparse.Namespace) -> int:
         print(f"wrote {args.out}")
     elif args.command == "render":
         stats = render.render_video(cfg, args.out, duration=args.duration, fps=args.fps,
-                                    backend=args.backend, antialias=not args.draft,
+                                    speed=args.speed, backend=args.backend, antialias=not args.draft,
                                     overlays=parse_overlays(args.overlay),
                                     progress=not args.quiet and sys.stderr.isatty())
         if not args.quiet:

@@ -98,7 +98,86 @@ class BallCfg:
 @dataclass(frozen=True)
 class RenderCfg:
     fps: int = 50
-    duration: float = 10.0
+    duration: float = 10.0      # simulated seconds
+    speed: float = 1.0          # simulated seconds per video second (1: real time)
+    color_by: str = "none"      # lattice atoms: "displacement" or "speed", with a colour bar
+
+
+# ---- the ball-and-spring model of matter: a lattice of atoms joined by bonds ----------
+
+FIXED_MODES = ("none", "ends", "start", "outer")
+COLOR_BY = ("none", "displacement", "speed")
+BOND_STYLES = ("auto", "helix", "cylinder", "line")
+AVOGADRO = 6.02214076e23      # 1/mol
+BOLTZMANN = 1.380649e-23      # J/K
+
+
+@dataclass(frozen=True)
+class LatticeCfg:
+    """A simple cubic lattice: ``shape`` atoms along x, y, z (a chain is [N] along x).
+
+    ``spacing`` is the bond's relaxed length d; instead, ``density`` (kg/m^3) gives
+    d = (m/density)^(1/3), one atom per cube of side d. ``fixed``: which atoms are
+    held: none; the two x ends (a chain's end atoms, a bar's end faces); the
+    start (the x = 0 end only); or the outer layer.
+    """
+
+    shape: tuple[int, int, int] = (10, 1, 1)
+    spacing: float | None = None
+    density: float | None = None
+    fixed: str = "ends"
+
+
+@dataclass(frozen=True)
+class BondCfg:
+    """Every bond is a spring of stiffness ``k`` relaxed at the lattice spacing.
+
+    ``style`` draws them as helices, cylinders or lines; ``auto`` takes helices
+    up to :data:`springscene.lattice.HELIX_MAX_BONDS` bonds and cylinders beyond.
+    ``radius`` (the helix's, or the cylinder's) and ``thickness`` (the helix's wire)
+    default to fractions of the spacing.
+    """
+
+    k: float = 15.0
+    color: Color = (0.0, 1.0, 1.0)
+    style: str = "auto"
+    radius: float | None = None
+    thickness: float | None = None
+    coils: int = 5
+
+
+@dataclass(frozen=True)
+class AtomCfg:
+    """Each atom's mass ``m`` (kg), or its ``molar_mass`` (kg/mol): m = molar_mass / N_A.
+
+    ``radius`` is only drawn (default a quarter of the spacing).
+    """
+
+    m: float | None = None
+    molar_mass: float | None = None
+    radius: float | None = None
+    color: Color = (1.0, 0.0, 0.0)
+
+
+@dataclass(frozen=True)
+class StartCfg:
+    """How the atoms start: at their sites, at rest, except for
+
+    ``kick``: this velocity (m/s) given to the first free atom along x (every free
+    atom of the first free layer, in a crystal), which launches a pulse;
+    ``temperature``: random thermal momenta (Maxwell-Boltzmann, K), from ``seed``.
+    """
+
+    kick: Vec = (0.0, 0.0, 0.0)
+    temperature: float = 0.0
+    seed: int = 0
+
+
+@dataclass(frozen=True)
+class PullCfg:
+    """A steady force (N, along +x) on the last face (x end), shared by its atoms."""
+
+    force: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -112,19 +191,35 @@ class Config:
     spring: SpringCfg = field(default_factory=SpringCfg)
     ball: BallCfg = field(default_factory=BallCfg)
     render: RenderCfg = field(default_factory=RenderCfg)
+    lattice: LatticeCfg | None = None      # a lattice config: atoms and bonds, no ball
+    bond: BondCfg = field(default_factory=BondCfg)
+    atom: AtomCfg = field(default_factory=AtomCfg)
+    start: StartCfg = field(default_factory=StartCfg)
+    pull: PullCfg = field(default_factory=PullCfg)
     source: str = "<defaults>"
 
     @property
     def driven(self) -> bool:
         return self.drive.type != "none"
 
+    @property
+    def is_lattice(self) -> bool:
+        """A chain or crystal of atoms ([lattice]) rather than the page's ball on a spring."""
+        return self.lattice is not None
+
     def system(self, omega: Any = None) -> System:
-        """The physics system: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball.
+        """The physics system. A lattice config's is :func:`springscene.lattice.build`'s.
+
+        Otherwise the ball on its spring: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball.
 
         With ``omega`` an array of N drive frequencies, N independent copies side by
         side (holder 2c, ball 2c+1, spring c), copy c driven at ``omega[c]``: a
         resonance sweep as one system.
         """
+        if self.is_lattice:
+            from . import lattice
+
+            return lattice.build(self)
         w = np.atleast_1d(np.asarray(self.drive.omega if omega is None else omega, float))
         n = len(w) if omega is not None else 1
         holder, ball = np.arange(0, 2 * n, 2), np.arange(1, 2 * n, 2)
@@ -223,6 +318,29 @@ def _choice(*options: str) -> Callable[[Any], str]:
     return check
 
 
+def _shape(v: Any) -> tuple[int, int, int]:
+    if not isinstance(v, list) or len(v) not in (1, 3):
+        raise ValueError("must be [N] (a chain along x) or [Nx, Ny, Nz]")
+    n = [_positive_int(c) for c in v]
+    n += [1] * (3 - len(n))
+    if n[0] * n[1] * n[2] > MAX_ATOMS:
+        raise ValueError(f"has {n[0] * n[1] * n[2]:,} atoms; the limit is {MAX_ATOMS:,}")
+    if n[0] * n[1] * n[2] < 2:
+        raise ValueError("must have at least two atoms")
+    return (n[0], n[1], n[2])
+
+
+MAX_ATOMS = 1_000_000
+
+
+def _whole(v: Any) -> int:
+    if isinstance(v, bool) or not isinstance(v, int):
+        raise ValueError(f"must be a whole number, got {type(v).__name__}")
+    if v < 0:
+        raise ValueError(f"must be >= 0, got {v}")
+    return v
+
+
 def _fov(v: Any) -> float:
     x = _positive(v)
     if x >= math.pi:
@@ -245,13 +363,40 @@ _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
                "coils": _positive_int, "color": parse_color, "k3": _non_negative,
                "yield_stretch": _positive},
     "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
-    "render": {"fps": _positive_int, "duration": _non_negative},
+    "render": {"fps": _positive_int, "duration": _non_negative, "speed": _positive,
+               "color_by": _choice(*COLOR_BY)},
+    "lattice": {"shape": _shape, "spacing": _positive, "density": _positive,
+                "fixed": _choice(*FIXED_MODES)},
+    "bond": {"k": _positive, "color": parse_color, "style": _choice(*BOND_STYLES),
+             "radius": _positive, "thickness": _non_negative, "coils": _positive},
+    "atom": {"m": _positive, "molar_mass": _positive, "radius": _positive, "color": parse_color},
+    "start": {"kick": _vec, "temperature": _non_negative, "seed": _whole},
+    "pull": {"force": _non_negative},
 }
+
+# sections of the page's ball-on-a-spring scene, and of a lattice of atoms
+BALL_SECTIONS = ("drive", "holder", "spring", "ball")
+LATTICE_SECTIONS = ("lattice", "bond", "atom", "start", "pull")
 
 
 def from_dict(data: dict[str, Any], source: str = "<dict>") -> Config:
     """Check a parsed TOML document and build a :class:`Config`; defaults fill what is absent."""
     cfg = Config(source=source)
+    if "lattice" in data:
+        wrong = [sec for sec in BALL_SECTIONS if sec in data]
+        if wrong:
+            raise UserError(f"{source}: [{wrong[0]}] does not apply to a [lattice] config "
+                            f"(a lattice has [{'], ['.join(LATTICE_SECTIONS)}])")
+        # gravity is nothing beside the bonds (m g / k ~ 1e-26 m for atoms): off unless given
+        physics_table = data.get("physics")
+        if not (isinstance(physics_table, dict) and "g" in physics_table):
+            cfg = replace(cfg, physics=replace(cfg.physics, g=(0.0, 0.0, 0.0)))
+        cfg = replace(cfg, lattice=LatticeCfg())
+    else:
+        wrong = [sec for sec in LATTICE_SECTIONS if sec in data]
+        if wrong:
+            raise UserError(f"{source}: [{wrong[0]}] needs a [lattice] section (shape, spacing, "
+                            "fixed) to describe the atoms")
     for section, table in data.items():
         if section not in _CHECKS:
             raise UserError(f"{source}: unknown section [{section}] "
@@ -289,6 +434,16 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
         section, key = keys[0].split(".")
         return f"{src}: [{section}] {key}"
 
+    if cfg.render.color_by != "none" and not cfg.is_lattice:
+        raise UserError(f"{where('render.color_by')}: colouring by {cfg.render.color_by} is for "
+                        "the atoms of a [lattice] config")
+    if cfg.is_lattice:
+        _check_lattice(cfg, where)
+        problem = stability_problem(cfg)
+        if problem:
+            raise UserError(f"{where('physics.dt', 'physics.integrator')}: {problem}")
+        return
+
     d = cfg.drive
     if d.type != "none":
         for key in ("amplitude", "omega"):
@@ -318,10 +473,35 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
 MAX_DRIVE_PHASE_PER_STEP = 2 * math.pi / 12   # a drive period needs a dozen steps at least
 
 
+def _check_lattice(cfg: Config, where: Callable[..., str]) -> None:
+    src, lat, atom = cfg.source, cfg.lattice, cfg.atom
+    if (atom.m is None) == (atom.molar_mass is None):
+        raise UserError(f"{src}: [atom] needs exactly one of m (kg) and molar_mass (kg/mol)")
+    if (lat.spacing is None) == (lat.density is None):
+        raise UserError(f"{src}: [lattice] needs exactly one of spacing (m) and density (kg/m^3)")
+    nx, ny, nz = lat.shape
+    if cfg.pull.force > 0:
+        if lat.fixed != "start":
+            raise UserError(f"{src}: [pull] force needs [lattice] fixed = \"start\" (the bar is "
+                            f"held at its x = 0 end and pulled at the other), got {lat.fixed!r}")
+        if nx < 2:
+            raise UserError(f"{src}: [pull] force needs at least two atoms along x, "
+                            f"[lattice] shape has {nx}")
+    from . import lattice
+
+    held = lattice.fixed_mask(lat.shape, lat.fixed)
+    if held.all():
+        raise UserError(f"{src}: [lattice] fixed = {lat.fixed!r} holds every atom of shape "
+                        f"{list(lat.shape)}: nothing can move")
+    if any(cfg.start.kick) and len(lattice.first_free_layer(lat.shape, held)) == 0:
+        raise UserError(f"{src}: [start] kick has no free atom to kick")
+
+
 def stability_problem(cfg: Config) -> str | None:
     """Why the config's step would make its integrator blow up, with a step that would not."""
     name, dt = cfg.physics.integrator, cfg.physics.dt
     omega, gamma = physics.mode_bounds(cfg.system())
+    omega, gamma = np.unique(np.column_stack([omega, gamma]), axis=0).T   # a lattice repeats them
     if integrators.stable(name, omega, gamma, dt):
         return None
     w, gm = float(omega.max()), float(gamma.max())
@@ -331,7 +511,8 @@ def stability_problem(cfg: Config) -> str | None:
             "euler": f"grows the amplitude more than {integrators.EULER_MAX_GROWTH_PER_PERIOD:g}x "
                      "per period"}[name]
     damped = f", b/2m = {gm:.3g} /s" if gm > 0 else ""
-    return (f"dt = {dt:g} s is unstable for {name} (omega = sqrt(k/m) = {w:.4g} rad/s, "
+    what = "a bound on the fastest mode's omega" if cfg.is_lattice else "omega = sqrt(k/m)"
+    return (f"dt = {dt:g} s is unstable for {name} ({what} = {w:.4g} rad/s, "
             f"omega*dt = {w * dt:.3g}{damped}; {name} {rule}); "
             f"use dt <= {integrators.suggest_step(h_max):g} s")
 

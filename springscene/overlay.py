@@ -58,9 +58,13 @@ def parse_overlays(text: str, flag: str = "--overlay") -> tuple[str, ...]:
     return names
 
 
-def clock_text(t: float) -> str:
-    """The clock's text: ``t = 1.23 s``."""
-    return f"t = {t:.2f} s"
+def clock_text(t: float, speed: float = 1.0) -> str:
+    """The clock's text: ``t = 1.23 s``; in ps or fs when a video second is that short."""
+    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("ns", 1e-9), ("ps", 1e-12),
+                        ("fs", 1e-15)):
+        if speed >= 0.5 * scale:
+            break
+    return f"t = {t / scale:.2f} {unit}"
 
 
 def _limits(values, include: tuple[float, ...] = (), pad: float = 0.08,
@@ -251,6 +255,9 @@ class Overlays:
                 raise ValueError(f"unknown overlay {name!r} (use {', '.join(OVERLAYS)})")
         self.names = overlays
         self.cfg = cfg
+        if cfg.is_lattice and ("graph" in overlays or "energy" in overlays):
+            raise UserError("--overlay: graph and energy follow the page's single ball; "
+                            "a [lattice] config takes only time")
         self.scene_size = (cfg.scene.width, cfg.scene.height)
         w, h = self.scene_size
         self.graph = self.energy = None
@@ -301,7 +308,7 @@ class Overlays:
     def update_scene(self, scene, system) -> None:
         """Set the scene's clock to the system's time (before the scene is rendered)."""
         if "time" in self.names:
-            scene.set_clock(clock_text(system.t))
+            scene.set_clock(clock_text(system.t, self.cfg.render.speed))
 
     def compose(self, scene_image: np.ndarray, system) -> np.ndarray:
         """The video frame: ``scene_image`` (h, w, 3) with the panels at ``system``'s state.

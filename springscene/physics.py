@@ -31,11 +31,20 @@ Beyond Hooke's law (all off by default):
   at the limit while L0 moves so that |s| = yield_stretch), and the work of that
   flow goes to ``E_thermal`` (plastic work heats the metal);
 - a :class:`Drive`: driven support nodes moving as ``A sin(omega t)``, or an
-  external force ``F0 cos(omega t)`` on chosen nodes.
+  external force ``F0 cos(omega t)`` on chosen nodes;
+- a steady external force per node (``F_ext``), e.g. a bar pulled at one face.
+
+A lattice of atoms (:mod:`springscene.lattice`) is the same system with its
+nodes on a grid: with ``grid = (nx, ny, nz)`` the nodes are the grid's points in
+C order and the springs its bonds, axis by axis (:func:`grid_bonds`), and the
+spring forces are computed on the grid by slicing (a stencil) instead of by
+gather and scatter. The arithmetic per spring is the same; only the order in
+which each node's spring forces are summed differs.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -118,6 +127,10 @@ class System:
     drive : Drive or None
     integrator : str
         One of :data:`springscene.integrators.NAMES`.
+    F_ext : (N, 3) float64 array or None
+        A steady external force on each node (N); fixed nodes ignore it.
+    grid : (nx, ny, nz) or None
+        The nodes are a grid in C order and the springs :func:`grid_bonds`' bonds.
     """
 
     pos: np.ndarray
@@ -135,6 +148,8 @@ class System:
     yield_stretch: np.ndarray | float = np.inf
     drive: Drive | None = None
     integrator: str = "euler-cromer"
+    F_ext: np.ndarray | None = None
+    grid: tuple[int, int, int] | None = None
     t: float = 0.0
     steps: int = 0
     E_thermal: float = 0.0
@@ -163,6 +178,16 @@ class System:
         self.b[self.fixed] = 0.0
         self.m[self.fixed & ~(self.m > 0)] = 1.0     # anchors never divide by their mass
         self._free = np.flatnonzero(~self.fixed)
+        self._held = np.flatnonzero(self.fixed)
+        if self.F_ext is not None:
+            self.F_ext = np.array(self.F_ext, dtype=np.float64).reshape(n, 3)
+            self.F_ext[self.fixed] = 0.0
+        if self.grid is not None:
+            self.grid = tuple(int(c) for c in self.grid)
+            i, j = grid_bonds(self.grid)
+            if n != math.prod(self.grid) or not (np.array_equal(i, self.i)
+                                                 and np.array_equal(j, self.j)):
+                raise ValueError(f"the nodes and springs are not the grid {self.grid}'s")
         anchors = np.flatnonzero(self.fixed)
         self.ref = self.pos[anchors[0]].copy() if len(anchors) else np.zeros(3)
         if self.drive is not None:
@@ -197,6 +222,65 @@ class System:
         return bool(np.any(self.k3))
 
 
+def grid_bonds(shape: tuple[int, int, int]) -> tuple[np.ndarray, np.ndarray]:
+    """Nearest-neighbour bonds of a grid of nodes numbered in C order: (i, j) with j = i + 1 step.
+
+    The x bonds come first, then y, then z; each block in C order of the bond's
+    start node, so that block a reshaped to the grid less one layer along a is the
+    slice ``pos[1:] - pos[:-1]`` along a.
+    """
+    index = np.arange(math.prod(shape)).reshape(shape)
+    i, j = [], []
+    for a in range(3):
+        if shape[a] > 1:
+            i.append(np.take(index, np.arange(shape[a] - 1), axis=a).ravel())
+            j.append(np.take(index, np.arange(1, shape[a]), axis=a).ravel())
+    return (np.concatenate(i) if i else np.zeros(0, np.intp),
+            np.concatenate(j) if j else np.zeros(0, np.intp))
+
+
+def _axis_slices(a: int) -> tuple[tuple, tuple]:
+    hi, lo = [slice(None)] * 3, [slice(None)] * 3
+    hi[a], lo[a] = slice(1, None), slice(None, -1)
+    return tuple(hi), tuple(lo)
+
+
+_SLICES = tuple(_axis_slices(a) for a in range(3))
+
+
+def _grid_spring_forces(s: System, pos: np.ndarray, plastic: bool, stiffens: bool) -> np.ndarray:
+    """The springs' net force on each node of a grid system (N, 3), by slicing the grid.
+
+    Per bond it is the generic path's arithmetic: ``L = pos[j] - pos[i]``,
+    ``coef = -k (mag(L) - L0)``, ``Fs = coef * (L / mag)``, added to j and taken from i.
+    """
+    shape = s.grid
+    P = pos.reshape(shape + (3,))
+    F = np.zeros(shape + (3,))
+    start = 0
+    for a in range(3):
+        if shape[a] < 2:
+            continue
+        hi, lo = _SLICES[a]
+        L = P[hi] - P[lo]
+        block = L.shape[:3]
+        stop = start + math.prod(block)
+        mag = np.sqrt(L[..., 0] ** 2 + L[..., 1] ** 2 + L[..., 2] ** 2)
+        stretch = mag - s.L0[start:stop].reshape(block)
+        if plastic:
+            y = s.yield_stretch[start:stop].reshape(block)
+            stretch = np.clip(stretch, -y, y)
+        coef = -s.k[start:stop].reshape(block) * stretch
+        if stiffens:
+            coef -= s.k3[start:stop].reshape(block) * stretch ** 3
+        L /= mag[..., None]
+        L *= coef[..., None]
+        F[hi] += L
+        F[lo] -= L
+        start = stop
+    return F.reshape(-1, 3)
+
+
 def spring_vectors(s: System, pos: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """Return ``L = pos[j] - pos[i]`` (S, 3) and ``mag(L)`` (S,), as VPython computes them."""
     pos = s.pos if pos is None else pos
@@ -219,24 +303,30 @@ def forces(s: System, pos: np.ndarray, t: float,
     if drive is not None and drive.kind == "support":
         pos = pos.copy()
         pos[drive.nodes] = drive.base + drive.offsets(t)
-    L, mag = spring_vectors(s, pos)
     plastic, stiffens = flags if flags is not None else (s.is_plastic, s.stiffens)
-    stretch = mag - s.L0
-    if plastic:          # elastic-perfectly-plastic: the force never exceeds its value at the limit
-        stretch = np.clip(stretch, -s.yield_stretch, s.yield_stretch)
-    coef = -s.k * stretch
-    if stiffens:
-        coef = coef - s.k3 * stretch ** 3
-    Fs = coef[:, None] * (L / mag[:, None])
-    n = s.n_nodes
-    F = np.empty((n, 3))
-    for c in range(3):
-        F[:, c] = (np.bincount(s.j, weights=Fs[:, c], minlength=n)
-                   - np.bincount(s.i, weights=Fs[:, c], minlength=n))
-    F += s.m[:, None] * s.g
+    if s.grid is not None:
+        F = _grid_spring_forces(s, pos, plastic, stiffens)
+    else:
+        L, mag = spring_vectors(s, pos)
+        stretch = mag - s.L0
+        if plastic:      # elastic-perfectly-plastic: the force never exceeds its value at the limit
+            stretch = np.clip(stretch, -s.yield_stretch, s.yield_stretch)
+        coef = -s.k * stretch
+        if stiffens:
+            coef = coef - s.k3 * stretch ** 3
+        Fs = coef[:, None] * (L / mag[:, None])
+        n = s.n_nodes
+        F = np.empty((n, 3))
+        for c in range(3):
+            F[:, c] = (np.bincount(s.j, weights=Fs[:, c], minlength=n)
+                       - np.bincount(s.i, weights=Fs[:, c], minlength=n))
+    if s.g.any():
+        F += s.m[:, None] * s.g
+    if s.F_ext is not None:
+        F += s.F_ext
     if drive is not None and drive.kind == "force":
         F[drive.nodes] += drive.force(t)
-    F[s.fixed] = 0.0
+    F[s._held] = 0.0
     return F
 
 
