@@ -131,6 +131,11 @@ def _run(args: argparse.Namespace) -> int:
         out = check_output(args.out, (".csv",))
         render.write_csv(render.simulate(cfg, args.duration), out)
         print(f"wrote {out}")
+    elif args.command == "analyze" and cfg.is_lattice:
+        from springscene import matter
+
+        result = matter.analyze(cfg, args.duration)
+        print(json.dumps(result, indent=2) if args.json else matter.table(result))
     elif args.command == "analyze":
         from springscene import analysis
 
@@ -151,6 +156,11 @@ def _run(args: argparse.Namespace) -> int:
         if out is not None:
             sweep.write_csv(result, out)
             print(f"wrote {out}")
+    elif args.command == "figures" and cfg.is_lattice:
+        from springscene import matter
+
+        for path in matter.make_figures(cfg, args.out):
+            print(f"wrote {path}")
     elif args.command == "figures":
         from springscene import figures
 
