@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render figures test bench baselines clean system-deps
+.PHONY: setup render figures matter test bench baselines clean system-deps
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -34,6 +34,16 @@ render: setup
 figures: setup
 	$(BIN)/springscene figures $(WIKI) --out renders/wiki/
 
+# the ball-and-spring model of matter: videos of a chain of aluminium atoms carrying a
+# sound pulse, a crystal at 300 K and a bar pulled; stills and measured figures
+matter: setup
+	@mkdir -p renders/matter
+	$(BIN)/springscene render configs/chain-aluminum.toml --out renders/matter/chain-aluminum.mp4
+	$(BIN)/springscene render configs/crystal.toml --out renders/matter/crystal.mp4
+	$(BIN)/springscene render configs/bar.toml --out renders/matter/bar.mp4
+	for c in chain-aluminum chain-lead crystal bar; do \
+	  $(BIN)/springscene figures configs/$$c.toml --out renders/matter/$$c/ || exit 1; done
+
 test: setup
 	$(BIN)/python -m pytest
 
@@ -41,9 +51,11 @@ bench: setup
 	$(BIN)/python benchmarks/bench_render.py
 	$(BIN)/python benchmarks/bench_physics.py
 	$(BIN)/python benchmarks/bench_vpython.py
+	$(BIN)/python benchmarks/bench_matter.py
+	$(BIN)/python benchmarks/bench_matter_render.py
 
 baselines: setup
-	$(BIN)/python -m pytest tests/test_render.py tests/test_figures.py tests/test_overlay.py --regen-baselines
+	$(BIN)/python -m pytest tests/test_render.py tests/test_figures.py tests/test_overlay.py tests/test_lattice_scene.py --regen-baselines
 
 clean:
 	rm -rf $(VENV) build *.egg-info renders/wiki/oscillation.mp4 renders/wiki/still.png

@@ -70,121 +70,72 @@ def title_color(background) -> str:
     return "black" if luminance > 0.5 else "white"
 
 
-class Scene:
-    """An off-screen scene for a config, following a :class:`System` frame by frame.
+def new_plotter(cfg: Config, antialias: bool = True):
+    """An off-screen plotter of the config's size and background, lit by VPython's :data:`LIGHTS`.
 
-    Parameters
-    ----------
-    cfg : Config
-        Scene, camera and object settings.
-    system : System
-        The state the scene starts from (node 0 the holder, node 1 the ball).
-    antialias : bool
-        4x multisampling when True; off for draft renders.
-    backend_name : str
-        "auto", "egl" or "osmesa".
+    4x multisampling when ``antialias``. The backend must have been chosen
+    (:func:`springscene.backend.select`).
     """
+    import pyvista as pv
 
-    def __init__(self, cfg: Config, system: System, antialias: bool = True,
-                 backend_name: str = "auto") -> None:
+    w, h = cfg.scene.width, cfg.scene.height
+    pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
+    pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
+    pl.set_background(cfg.scene.background)
+    for direction, intensity in LIGHTS:
+        light = pv.Light(position=direction, focal_point=(0, 0, 0),
+                         color=(intensity,) * 3, light_type="scene light")
+        light.positional = False
+        pl.add_light(light)
+    return pl
+
+
+def add_title(plotter, cfg: Config) -> None:
+    """The config's title centred along the top edge (no text when it is blank)."""
+    if cfg.scene.title.strip():
+        plotter.add_text(cfg.scene.title.strip(), position="upper_edge",
+                         font_size=TITLE_FONT_SIZE, color=title_color(cfg.scene.background),
+                         name="title")
+
+
+class SceneBase:
+    """What every off-screen scene shares: the plotter, VPython's camera and autoscale,
+    the read-back, the clock. A subclass draws its objects, calls :meth:`_open` first and
+    :meth:`_place_camera` from its ``update``, and gives :meth:`object_bounds`."""
+
+    cfg: Config
+    plotter = None
+    view: camera.View | None = None
+    _range: float | None = None
+    _pixels = None
+
+    def _open(self, cfg: Config, antialias: bool, backend_name: str):
+        """Choose the backend and make the plotter; returns it."""
         backend.select(backend_name)
-        import pyvista as pv     # after the backend is chosen
-
         self.cfg = cfg
-        w, h = cfg.scene.width, cfg.scene.height
-        pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
-        pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
-        pl.set_background(cfg.scene.background)
-        for direction, intensity in LIGHTS:
-            light = pv.Light(position=direction, focal_point=(0, 0, 0),
-                             color=(intensity,) * 3, light_type="scene light")
-            light.positional = False
-            pl.add_light(light)
-        self.plotter = pl
-
-        # holders: boxes centred on the fixed nodes
-        self._holder_bounds = []
-        self._holders = []          # (node, actor, rest position): driven supports move
-        for node in np.flatnonzero(system.fixed):
-            c = system.pos[node]
-            half = np.asarray(cfg.holder.size) / 2
-            box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
-            actor = pl.add_mesh(box, smooth_shading=False)
-            _material(actor, cfg.holder.color)
-            actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
-            self._holder_bounds.append(np.stack([c - half, c + half]))
-            self._holders.append((int(node), actor, c.copy()))
-
-        # balls: one sphere mesh, moved by its actor's position
-        self._balls = []
-        r = cfg.ball.radius
-        for node in system.free:
-            sphere = pv.Sphere(radius=r, center=(0, 0, 0), theta_resolution=SPHERE_SLICES,
-                               phi_resolution=SPHERE_SLICES)
-            actor = pl.add_mesh(sphere, smooth_shading=True)
-            _material(actor, cfg.ball.color)
-            self._balls.append((int(node), actor))
-
-        # springs: tube meshes whose points are rewritten in place
-        self._springs = []
-        sc = cfg.spring
-        for i, j in zip(system.i, system.j):
-            tube = HelixTube(sc.radius, sc.thickness, sc.coils)
-            frame = HelixFrame()
-            pts, normals = tube.points(system.pos[i], system.pos[j] - system.pos[i],
-                                       frame.set_axis(system.pos[j] - system.pos[i]))
-            mesh = pv.PolyData(pts, tube.faces())
-            mesh.point_data["Normals"] = normals
-            mesh.GetPointData().SetActiveNormals("Normals")
-            actor = pl.add_mesh(mesh, smooth_shading=False, show_scalar_bar=False)
-            actor.GetMapper().ScalarVisibilityOff()
-            _material(actor, sc.color)
-            self._springs.append((int(i), int(j), tube, frame, mesh, actor))
-
-        if cfg.scene.title.strip():
-            pl.add_text(cfg.scene.title.strip(), position="upper_edge", font_size=TITLE_FONT_SIZE,
-                        color=title_color(cfg.scene.background), name="title")
+        self.plotter = new_plotter(cfg, antialias)
         self._autoscale = camera.Autoscaler()
-        self.view: camera.View | None = None
-        self._range: float | None = None
-        self.update(system)
+        self.view = None
+        self._range = None
         self._pixels = None
-
-    # -- per frame ---------------------------------------------------------------------
-
-    def update(self, system: System) -> None:
-        """Move balls and redraw springs along ``pos[j] - pos[i]`` (``spring.axis = ball.pos - holder.pos``)."""
-        for node, actor in self._balls:
-            actor.SetPosition(*system.pos[node])
-        if system.drive is not None and system.drive.kind == "support":
-            for node, actor, rest in self._holders:       # the driven holder moves
-                actor.SetPosition(*(system.pos[node] - rest))
-        for i, j, tube, frame, mesh, _ in self._springs:
-            axis = system.pos[j] - system.pos[i]
-            pts, normals = tube.points(system.pos[i], axis, frame.set_axis(axis))
-            mesh.points[:] = pts
-            mesh.point_data["Normals"][:] = normals
-            mesh.GetPoints().Modified()
-            mesh.GetPointData().GetNormals().Modified()
-        self._place_camera(system)
+        return self.plotter
 
     def object_bounds(self, system: System) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
-        r = self.cfg.ball.radius
-        b = [bounds + (system.pos[node] - rest)
-             for bounds, (node, _, rest) in zip(self._holder_bounds, self._holders)]
-        b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]
-        for *_, mesh, _ in self._springs:
-            x0, x1, y0, y1, z0, z1 = mesh.bounds
-            b.append(np.array([[x0, y0, z0], [x1, y1, z1]]))
-        return np.array(b)
+        raise NotImplementedError
+
+    def autoscale_bounds(self, system: System) -> tuple[np.ndarray, np.ndarray]:
+        """What VPython's autoscale measures: the objects' bounds and the point they are
+        measured from (the world axes and ``[camera] center``, as VPython)."""
+        return self.object_bounds(system), np.asarray(self.cfg.camera.center, dtype=float)
 
     def _place_camera(self, system: System) -> None:
         c = self.cfg.camera
         w, h = self.cfg.scene.width, self.cfg.scene.height
         rng = c.range
         if rng is None:
-            rng = self._autoscale.update(self.object_bounds(system), c.center, c.fov, w, h)
+            bounds, center = self.autoscale_bounds(system)
+            rng = self._autoscale.update(bounds, center, c.fov, w, h)
         if self.view is not None and rng == self._range:
             return
         v = camera.view(c.center, c.forward, c.up, c.fov, rng, w, h)
@@ -225,6 +176,107 @@ class Scene:
             self._clock = actor
         self._clock.SetInput(str(text))
 
+    def close(self) -> None:
+        self.plotter.close()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+class Scene(SceneBase):
+    """An off-screen scene for a config, following a :class:`System` frame by frame.
+
+    Parameters
+    ----------
+    cfg : Config
+        Scene, camera and object settings.
+    system : System
+        The state the scene starts from (node 0 the holder, node 1 the ball).
+    antialias : bool
+        4x multisampling when True; off for draft renders.
+    backend_name : str
+        "auto", "egl" or "osmesa".
+    """
+
+    def __init__(self, cfg: Config, system: System, antialias: bool = True,
+                 backend_name: str = "auto") -> None:
+        pl = self._open(cfg, antialias, backend_name)
+        import pyvista as pv     # after the backend is chosen
+
+        # holders: boxes centred on the fixed nodes
+        self._holder_bounds = []
+        self._holders = []          # (node, actor, rest position): driven supports move
+        for node in np.flatnonzero(system.fixed):
+            c = system.pos[node]
+            half = np.asarray(cfg.holder.size) / 2
+            box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
+            actor = pl.add_mesh(box, smooth_shading=False)
+            _material(actor, cfg.holder.color)
+            actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
+            self._holder_bounds.append(np.stack([c - half, c + half]))
+            self._holders.append((int(node), actor, c.copy()))
+
+        # balls: one sphere mesh, moved by its actor's position
+        self._balls = []
+        r = cfg.ball.radius
+        for node in system.free:
+            sphere = pv.Sphere(radius=r, center=(0, 0, 0), theta_resolution=SPHERE_SLICES,
+                               phi_resolution=SPHERE_SLICES)
+            actor = pl.add_mesh(sphere, smooth_shading=True)
+            _material(actor, cfg.ball.color)
+            self._balls.append((int(node), actor))
+
+        # springs: tube meshes whose points are rewritten in place
+        self._springs = []
+        sc = cfg.spring
+        for i, j in zip(system.i, system.j):
+            tube = HelixTube(sc.radius, sc.thickness, sc.coils)
+            frame = HelixFrame()
+            pts, normals = tube.points(system.pos[i], system.pos[j] - system.pos[i],
+                                       frame.set_axis(system.pos[j] - system.pos[i]))
+            mesh = pv.PolyData(pts, tube.faces())
+            mesh.point_data["Normals"] = normals
+            mesh.GetPointData().SetActiveNormals("Normals")
+            actor = pl.add_mesh(mesh, smooth_shading=False, show_scalar_bar=False)
+            actor.GetMapper().ScalarVisibilityOff()
+            _material(actor, sc.color)
+            self._springs.append((int(i), int(j), tube, frame, mesh, actor))
+
+        add_title(pl, cfg)
+        self.update(system)
+
+    # -- per frame ---------------------------------------------------------------------
+
+    def update(self, system: System) -> None:
+        """Move balls and redraw springs along ``pos[j] - pos[i]`` (``spring.axis = ball.pos - holder.pos``)."""
+        for node, actor in self._balls:
+            actor.SetPosition(*system.pos[node])
+        if system.drive is not None and system.drive.kind == "support":
+            for node, actor, rest in self._holders:       # the driven holder moves
+                actor.SetPosition(*(system.pos[node] - rest))
+        for i, j, tube, frame, mesh, _ in self._springs:
+            axis = system.pos[j] - system.pos[i]
+            pts, normals = tube.points(system.pos[i], axis, frame.set_axis(axis))
+            mesh.points[:] = pts
+            mesh.point_data["Normals"][:] = normals
+            mesh.GetPoints().Modified()
+            mesh.GetPointData().GetNormals().Modified()
+        self._place_camera(system)
+
+    def object_bounds(self, system: System) -> np.ndarray:
+        """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
+        r = self.cfg.ball.radius
+        b = [bounds + (system.pos[node] - rest)
+             for bounds, (node, _, rest) in zip(self._holder_bounds, self._holders)]
+        b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]
+        for *_, mesh, _ in self._springs:
+            x0, x1, y0, y1, z0, z1 = mesh.bounds
+            b.append(np.array([[x0, y0, z0], [x1, y1, z1]]))
+        return np.array(b)
+
     @property
     def ball_actors(self) -> list:
         return [actor for _, actor in self._balls]
@@ -237,12 +289,3 @@ class Scene:
     @property
     def spring_actors(self) -> list:
         return [spring[5] for spring in self._springs]
-
-    def close(self) -> None:
-        self.plotter.close()
-
-    def __enter__(self) -> "Scene":
-        return self
-
-    def __exit__(self, *exc) -> None:
-        self.close()
