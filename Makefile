@@ -41,8 +41,12 @@ matter: setup
 	$(BIN)/springscene render configs/chain-aluminum.toml --out renders/matter/chain-aluminum.mp4
 	$(BIN)/springscene render configs/crystal.toml --out renders/matter/crystal.mp4
 	$(BIN)/springscene render configs/bar.toml --out renders/matter/bar.mp4
-	for c in chain-aluminum chain-lead crystal bar; do \
+	for c in chain chain-aluminum chain-lead crystal bar; do \
 	  $(BIN)/springscene figures configs/$$c.toml --out renders/matter/$$c/ || exit 1; done
+	$(BIN)/springscene still configs/chain.toml --time 1 --out renders/matter/chain/still.png
+	$(BIN)/springscene still configs/chain-aluminum.toml --time 3e-12 --out renders/matter/chain-aluminum/still.png
+	$(BIN)/springscene still configs/crystal.toml --time 1e-12 --out renders/matter/crystal/still.png
+	$(BIN)/springscene still configs/bar.toml --time 8e-12 --out renders/matter/bar/still.png
 
 test: setup
 	$(BIN)/python -m pytest
