@@ -331,6 +331,8 @@ def _shape(v: Any) -> tuple[int, int, int]:
 
 
 MAX_ATOMS = 1_000_000
+MAX_COILS = 200          # the page's spring: 60 chords a coil, 16 sides: 190,000 vertices
+MAX_BOND_COILS = 50      # every bond of a lattice drawn as a helix
 
 
 def _whole(v: Any) -> int:
@@ -339,6 +341,15 @@ def _whole(v: Any) -> int:
     if v < 0:
         raise ValueError(f"must be >= 0, got {v}")
     return v
+
+
+def _coils(limit: int, whole: bool = False) -> Callable[[Any], float]:
+    def check(v: Any) -> float:
+        x = _positive_int(v) if whole else _positive(v)
+        if x > limit:
+            raise ValueError(f"must be at most {limit}, got {x:g}")
+        return x
+    return check
 
 
 def _fov(v: Any) -> float:
@@ -360,7 +371,7 @@ _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
               "omega": _positive, "direction": _nonzero_vec},
     "holder": {"pos": _vec, "size": _positive_vec, "color": parse_color},
     "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _non_negative,
-               "coils": _positive_int, "color": parse_color, "k3": _non_negative,
+               "coils": _coils(MAX_COILS, whole=True), "color": parse_color, "k3": _non_negative,
                "yield_stretch": _positive},
     "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
     "render": {"fps": _positive_int, "duration": _non_negative, "speed": _positive,
@@ -368,7 +379,7 @@ _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
     "lattice": {"shape": _shape, "spacing": _positive, "density": _positive,
                 "fixed": _choice(*FIXED_MODES)},
     "bond": {"k": _positive, "color": parse_color, "style": _choice(*BOND_STYLES),
-             "radius": _positive, "thickness": _non_negative, "coils": _positive},
+             "radius": _positive, "thickness": _non_negative, "coils": _coils(MAX_BOND_COILS)},
     "atom": {"m": _positive, "molar_mass": _positive, "radius": _positive, "color": parse_color},
     "start": {"kick": _vec, "temperature": _non_negative, "seed": _whole},
     "pull": {"force": _non_negative},
@@ -434,6 +445,9 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
         section, key = keys[0].split(".")
         return f"{src}: [{section}] {key}"
 
+    c = cfg.camera
+    if abs(float(np.dot(c.forward, c.up))) >= 0.999999 * np.linalg.norm(c.forward) * np.linalg.norm(c.up):
+        raise UserError(f"{src}: [camera] up must not be parallel to [camera] forward")
     if cfg.render.color_by != "none" and not cfg.is_lattice:
         raise UserError(f"{where('render.color_by')}: colouring by {cfg.render.color_by} is for "
                         "the atoms of a [lattice] config")
@@ -465,9 +479,6 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
         raise UserError(f"{where('physics.dt', 'physics.integrator')}: {problem}")
     if np.allclose(cfg.ball.pos, cfg.holder.pos, rtol=0, atol=1e-12):
         raise UserError(f"{src}: [ball] pos must differ from [holder] pos (the spring has no direction)")
-    c = cfg.camera
-    if abs(float(np.dot(c.forward, c.up))) >= 0.999999 * np.linalg.norm(c.forward) * np.linalg.norm(c.up):
-        raise UserError(f"{src}: [camera] up must not be parallel to [camera] forward")
 
 
 MAX_DRIVE_PHASE_PER_STEP = 2 * math.pi / 12   # a drive period needs a dozen steps at least
@@ -493,6 +504,9 @@ def _check_lattice(cfg: Config, where: Callable[..., str]) -> None:
     if held.all():
         raise UserError(f"{src}: [lattice] fixed = {lat.fixed!r} holds every atom of shape "
                         f"{list(lat.shape)}: nothing can move")
+    if any(cfg.start.kick) and cfg.start.temperature > 0:
+        raise UserError(f"{src}: [start] takes a kick or a temperature, not both (the kick's "
+                        "energy would be counted as heat and the heat would blur the pulse)")
     if any(cfg.start.kick) and len(lattice.first_free_layer(lat.shape, held)) == 0:
         raise UserError(f"{src}: [start] kick has no free atom to kick")
 

@@ -160,6 +160,8 @@ def largest_stable_step(name: str, omega, gamma, h_hint: float) -> float:
 def suggest_step(h_max: float) -> float:
     """A round step comfortably inside the stable range: 1, 2 or 5 x 10^n, at most h_max/2."""
     target = h_max / 2
+    if not (target > 0 and math.isfinite(target)):     # absurd stiffness or mass: no round step
+        return target
     exp = math.floor(math.log10(target))
     for mant in (5, 2, 1):
         if mant * 10.0 ** exp <= target:

@@ -241,13 +241,17 @@ def _plan(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
     kick, T0, F = cfg.start.kick, cfg.start.temperature, cfg.pull.force
     nx = geo.shape[0]
     what = []
+    early_notes = []
     needs: dict[str, tuple[float, str]] = {}
     if kick[0] != 0 and nx >= 2:
         what.append("speed_of_sound")
         needs["speed_of_sound"] = (SOUND_REACH * geo.crossing,
                                    f"the pulse must cross {SOUND_REACH:.0%} of the chain at "
                                    f"v = d sqrt(k/m)")
-    if lat.is_chain and (kick[0] != 0 or T0 > 0) and geo.n_free >= 2:
+    if lat.is_chain and (kick[0] != 0 or T0 > 0) and geo.n_free >= 2 and cfg.damping.b > 0:
+        early_notes.append("dispersion not measured: [damping] b damps the normal modes, "
+                           "whose frequencies omega(q) are those of the undamped chain")
+    elif lat.is_chain and (kick[0] != 0 or T0 > 0) and geo.n_free >= 2:
         what.append("dispersion")
         w1 = geo.lowest_mode()
         needs["dispersion"] = (DISPERSION_PERIODS * 2 * math.pi / w1,
@@ -272,7 +276,7 @@ def _plan(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
                         "sound (a kick along x), the dispersion (a kicked or thermal chain), "
                         "Young's modulus (a pull) and equipartition (a temperature)")
     asked = duration if duration is not None else cfg.render.duration
-    notes = []
+    notes = early_notes
     run = asked
     if needs:
         key, (need, why) = max(needs.items(), key=lambda kv: kv[1][0])

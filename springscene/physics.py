@@ -371,7 +371,8 @@ def mode_bounds(s: System) -> tuple[np.ndarray, np.ndarray]:
     for a, b in ((s.i, s.j), (s.j, s.i)):
         # diagonal term k/m_a, and off-diagonal k/sqrt(m_a m_b) when b also moves
         rows += np.bincount(a, weights=s.k / m[a], minlength=s.n_nodes)
-        rows += np.bincount(a, weights=np.where(free[b], s.k / np.sqrt(m[a] * m[b]), 0.0),
+        rows += np.bincount(a, weights=np.where(free[b], s.k / (np.sqrt(m[a]) * np.sqrt(m[b])),
+                                                0.0),
                             minlength=s.n_nodes)
     return np.sqrt(rows[free]), (s.b / (2 * m))[free]
 

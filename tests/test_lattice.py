@@ -232,6 +232,10 @@ LATTICE_BAD = [
     ({"physics": {"dt": 1.5}}, "[physics] dt: dt = 1.5 s is unstable"),
     ({"render": {"speed": 0}}, "[render] speed must be > 0"),
     ({"bond": {"style": "zigzag"}}, "[bond] style must be one of"),
+    ({"bond": {"coils": 1e7}}, "[bond] coils must be at most 50"),
+    ({"camera": {"forward": [0, 1, 0], "up": [0, 2, 0]}}, "[camera] up must not be parallel"),
+    ({"start": {"temperature": 10.0}}, "[start] takes a kick or a temperature, not both"),
+    ({"atom": {"m": 1e-300}}, "is unstable"),
 ]
 
 
