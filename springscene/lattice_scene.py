@@ -301,6 +301,7 @@ class LatticeScene(SceneBase):
         d = lat.d
         self.sites = lat.sites()
         self.held = system.fixed.copy()
+        self._free_mask = ~self.held
         self._i, self._j = system.i.copy(), system.j.copy()
         self.atom_radius = cfg.atom.radius if cfg.atom.radius is not None else ATOM_RADIUS * d
 
@@ -451,7 +452,7 @@ class LatticeScene(SceneBase):
         self._atom_xyz[:] = pos
         self.atoms.GetPoints().Modified()
         if self.color_by != "none":
-            free = ~self.held
+            free = self._free_mask
             lo, hi = self.color_range
             v = scalar(self.color_by, system, self.sites)[free]
             idx = np.clip((v - lo) * ((LUT_SIZE - 1) / (hi - lo)) + 0.5, 0, LUT_SIZE - 1)

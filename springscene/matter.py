@@ -1030,19 +1030,22 @@ def make_figures(cfg: Config, out_dir: str | Path) -> list[Path]:
     """
     from .figures import prepare_out_dir
 
+    created = not Path(out_dir).exists()
     out = prepare_out_dir(out_dir)
-    result = measure(cfg)
     makers = (("speed_of_sound", "pulse", pulse_figure),
               ("dispersion", "dispersion", dispersion_figure),
               ("youngs_modulus", "pull", pull_figure),
               ("temperature", "thermal", thermal_figure))
     written: list[Path] = []
     try:
+        result = measure(cfg)
         for key, stem, draw in makers:
             if key in result:
                 written.append(save_png(draw(result), out / f"{stem}.png"))
     except BaseException:
         for path in written:
             path.unlink(missing_ok=True)
+        if created and not any(out.iterdir()):     # nor the folder this call made
+            out.rmdir()
         raise
     return written

@@ -281,7 +281,10 @@ def test_cli_figures_leave_nothing_on_error(tmp_path):
     out = tmp_path / "figs"
     proc = run_cli("figures", bar, "--out", out)
     assert proc.returncode == 2 and "has not settled" in proc.stderr
-    assert list(out.iterdir()) == []
+    assert not out.exists()                      # the folder it made is gone too
+    out.mkdir()
+    proc = run_cli("figures", bar, "--out", out)
+    assert proc.returncode == 2 and out.is_dir() and list(out.iterdir()) == []
 
 
 def test_short_chain_notes_the_untimed_pulse():
