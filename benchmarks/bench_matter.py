@@ -69,7 +69,7 @@ def per_object_rate(n: int, spheres: bool) -> float:
     from springscene import vpython as vp
     from springscene.vpython.vector import mag, norm, vector
 
-    s = crystal(n).system()
+    s = build.system(crystal(n))
 
     class Atom:
         __slots__ = ("pos", "p", "fixed")
@@ -102,7 +102,7 @@ def memory(cfg: config.Config) -> tuple[float, float, float]:
     """Traced peak from building the system to step 520 (MB), growth from step 20 to 520
     (bytes), and the process's peak RSS (MB)."""
     tracemalloc.start()
-    s = cfg.system()
+    s = build.system(cfg)
     physics.step(s, 20)
     before = tracemalloc.get_traced_memory()[0]
     physics.step(s, 500)
@@ -114,8 +114,8 @@ def memory(cfg: config.Config) -> tuple[float, float, float]:
 
 def main() -> None:
     cfg = crystal(N)
-    grid_sys = cfg.system()
-    plain_sys = without_grid(cfg.system())
+    grid_sys = build.system(cfg)
+    plain_sys = without_grid(build.system(cfg))
     print(f"{N}^3 crystal: {grid_sys.n_nodes:,} atoms, {len(grid_sys.i):,} bonds, "
           f"Euler-Cromer, {STEPS} steps per round, best of {ROUNDS}")
     grid, plain = [], []

@@ -30,7 +30,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from springscene import backend, config, physics, scene  # noqa: E402
+from springscene import backend, config, physics, render, scene  # noqa: E402
 from springscene.geometry import frames_from_up, perpendicular_ups  # noqa: E402
 from springscene import lattice_scene as ls  # noqa: E402
 
@@ -50,7 +50,7 @@ class Baseline:
 
     def __init__(self, cfg, system, antialias, color_range):
         # borrow a LatticeScene for the plotter, camera and colour bar; hide its objects
-        self.sc = ls.LatticeScene(cfg, system, antialias=antialias, color_range=color_range)
+        self.sc = render.make_scene(cfg, system, antialias=antialias, color_range=color_range)
         self.sc.atom_actor.VisibilityOff()
         self.sc.bond_actor.VisibilityOff()
         self.pl = self.sc.plotter
@@ -194,11 +194,11 @@ class PerObject(Baseline):
 def run(kind: str, cfg, color_range) -> float:
     """Frames per second of ``kind``: physics step + update + render + read back."""
     antialias = not kind.endswith("draft")
-    s = cfg.system()
+    s = build.system(cfg)
     n = FRAMES[kind]
     spf = steps_per_frame(cfg)
     if kind.startswith("imposters"):
-        sc = ls.LatticeScene(cfg, s, antialias=antialias, color_range=color_range)
+        sc = render.make_scene(cfg, s, antialias=antialias, color_range=color_range)
     elif kind.startswith("merged"):
         sc = MergedMesh(cfg, s, antialias, color_range)
     else:
@@ -219,15 +219,15 @@ def main() -> None:
     t0 = time.perf_counter()
     backend.select("auto")
     cfg = config.load(ROOT / "configs" / "crystal.toml")
-    cr = ls.color_range(cfg)
+    cr = render.lattice_color_range(cfg)
     fps: dict[str, list[float]] = {k: [] for k in FRAMES}
     for _ in range(ROUNDS):
         for kind in FRAMES:
             fps[kind].append(run(kind, cfg, cr))
     best = {k: max(v) for k, v in fps.items()}
-    s = cfg.system()
+    s = build.system(cfg)
     print(f"matter render benchmark: configs/crystal.toml, {len(s.pos)} atoms, {len(s.i)} bonds "
-          f"({ls.bond_style(cfg, len(s.i))}), coloured by {cfg.render.color_by}, "
+          f"({ls.bond_style(cfg.bond.style, len(s.i))}), coloured by {cfg.render.color_by}, "
           f"{cfg.scene.width}x{cfg.scene.height}; step + update + render + read back; "
           f"best of {ROUNDS} interleaved rounds")
     print(f"{'case':<20} {'frames/s':>9} {'frames':>7}  (rounds)")

@@ -61,7 +61,7 @@ def main() -> None:
 
 
 def _time_steps(cfg, n: int) -> float:
-    s = cfg.system()
+    s = build.system(cfg)
     start = time.perf_counter()
     physics.step(s, n)
     return time.perf_counter() - start

@@ -44,7 +44,7 @@ def floor(cfg, out: Path) -> float:
     from springscene.scene import Scene
 
     n = _frames(cfg)
-    with Scene(cfg, cfg.system()) as scene, VideoWriter(out, cfg.render.fps,
+    with render.make_scene(cfg, build.system(cfg)) as scene, VideoWriter(out, cfg.render.fps,
                                                          (cfg.scene.width, cfg.scene.height)) as w:
         start = time.perf_counter()
         for _ in range(n):
@@ -64,7 +64,7 @@ def naive(cfg, out: Path) -> float:
     g = np.array(cfg.physics.g)
     holder_pos = np.array(cfg.holder.pos)
     ball_pos, ball_p = np.array(cfg.ball.pos), np.array(cfg.ball.p)
-    with Scene(cfg, cfg.system()) as scene, VideoWriter(out, cfg.render.fps,
+    with render.make_scene(cfg, build.system(cfg)) as scene, VideoWriter(out, cfg.render.fps,
                                                          (cfg.scene.width, cfg.scene.height)) as w:
         pl = scene.plotter
         material = scene.spring_actors[0].GetProperty()
@@ -104,7 +104,7 @@ def ours(cfg, out: Path, antialias: bool = True) -> float:
 
 
 def physics_steps_per_second(cfg) -> float:
-    s = cfg.system()
+    s = build.system(cfg)
     n = 20000
     start = time.perf_counter()
     physics.step(s, n)

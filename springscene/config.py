@@ -1,4 +1,4 @@
-"""Scene configs: TOML files read into checked dataclasses, and the physics system they describe.
+"""Scene configs: TOML files read into checked dataclasses (:mod:`springscene.settings`).
 
 Every key is checked: an unknown section or key, a wrong type, a non-finite
 number or a value out of range raises :class:`~springscene.errors.UserError`
@@ -9,236 +9,20 @@ from __future__ import annotations
 
 import math
 import tomllib
-from dataclasses import dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable
 
 import numpy as np
 
-from .colors import Color, parse_color
+from . import build
+from .colors import parse_color
 from .errors import UserError
-from . import integrators, physics
-from .physics import Drive, System
-
-Vec = tuple[float, float, float]
-
-
-@dataclass(frozen=True)
-class SceneCfg:
-    title: str = "Ball and Spring Model of Matter"
-    width: int = 900
-    height: int = 600
-    background: Color = (1.0, 1.0, 1.0)
-
-
-@dataclass(frozen=True)
-class CameraCfg:
-    """VPython's canvas camera: ``range`` None means autoscale."""
-
-    center: Vec = (0.0, 0.0, 0.0)
-    forward: Vec = (0.0, 0.0, -1.0)
-    up: Vec = (0.0, 1.0, 0.0)
-    fov: float = math.pi / 3
-    range: float | None = None
-
-
-@dataclass(frozen=True)
-class PhysicsCfg:
-    dt: float = 0.01
-    g: Vec = (0.0, -9.8, 0.0)
-    integrator: str = "euler-cromer"
-
-
-@dataclass(frozen=True)
-class DampingCfg:
-    """Linear drag on the ball, F = -b v (kg/s)."""
-
-    b: float = 0.0
-
-
-@dataclass(frozen=True)
-class DriveCfg:
-    """``support``: the holder moves as A sin(omega t) along ``direction`` (A in m).
-    ``force``: the ball feels F0 cos(omega t) along ``direction`` (A = F0 in N)."""
-
-    type: str = "none"
-    amplitude: float = 0.0
-    omega: float = 0.0
-    direction: Vec = (0.0, 1.0, 0.0)
-
-
-@dataclass(frozen=True)
-class HolderCfg:
-    pos: Vec = (0.0, 0.0, 0.0)
-    size: Vec = (0.2, 0.01, 0.2)
-    color: Color = (0.5, 0.5, 0.5)
-
-
-@dataclass(frozen=True)
-class SpringCfg:
-    k: float = 15.0
-    L0: float = 0.10
-    radius: float = 0.015
-    thickness: float = 0.003
-    coils: int = 15
-    color: Color = (0.0, 1.0, 1.0)
-    k3: float = 0.0                       # stiffening, N/m^3: F = -(k s + k3 s^3)
-    yield_stretch: float = math.inf       # elastic limit of |stretch| (m); beyond it L0 sets
-
-
-@dataclass(frozen=True)
-class BallCfg:
-    m: float = 0.10
-    radius: float = 0.025
-    pos: Vec = (0.0, -0.18533333333333335, 0.0)
-    p: Vec = (0.0, 0.0, 0.0)
-    color: Color = (1.0, 0.0, 0.0)
-
-
-@dataclass(frozen=True)
-class RenderCfg:
-    fps: int = 50
-    duration: float = 10.0      # simulated seconds
-    speed: float = 1.0          # simulated seconds per video second (1: real time)
-    color_by: str = "none"      # lattice atoms: "displacement" or "speed", with a colour bar
-
-
-# ---- the ball-and-spring model of matter: a lattice of atoms joined by bonds ----------
-
-FIXED_MODES = ("none", "ends", "start", "outer")
-COLOR_BY = ("none", "displacement", "speed")
-BOND_STYLES = ("auto", "helix", "cylinder", "line")
-AVOGADRO = 6.02214076e23      # 1/mol
-BOLTZMANN = 1.380649e-23      # J/K
-
-
-@dataclass(frozen=True)
-class LatticeCfg:
-    """A simple cubic lattice: ``shape`` atoms along x, y, z (a chain is [N] along x).
-
-    ``spacing`` is the bond's relaxed length d; instead, ``density`` (kg/m^3) gives
-    d = (m/density)^(1/3), one atom per cube of side d. ``fixed``: which atoms are
-    held: none; the two x ends (a chain's end atoms, a bar's end faces); the
-    start (the x = 0 end only); or the outer layer.
-    """
-
-    shape: tuple[int, int, int] = (10, 1, 1)
-    spacing: float | None = None
-    density: float | None = None
-    fixed: str = "ends"
-
-
-@dataclass(frozen=True)
-class BondCfg:
-    """Every bond is a spring of stiffness ``k`` relaxed at the lattice spacing.
-
-    ``style`` draws them as helices, cylinders or lines; ``auto`` takes helices
-    up to :data:`springscene.lattice.HELIX_MAX_BONDS` bonds and cylinders beyond.
-    ``radius`` (the helix's, or the cylinder's) and ``thickness`` (the helix's wire)
-    default to fractions of the spacing.
-    """
-
-    k: float = 15.0
-    color: Color = (0.0, 1.0, 1.0)
-    style: str = "auto"
-    radius: float | None = None
-    thickness: float | None = None
-    coils: int = 5
-
-
-@dataclass(frozen=True)
-class AtomCfg:
-    """Each atom's mass ``m`` (kg), or its ``molar_mass`` (kg/mol): m = molar_mass / N_A.
-
-    ``radius`` is only drawn (default a quarter of the spacing).
-    """
-
-    m: float | None = None
-    molar_mass: float | None = None
-    radius: float | None = None
-    color: Color = (1.0, 0.0, 0.0)
-
-
-@dataclass(frozen=True)
-class StartCfg:
-    """How the atoms start: at their sites, at rest, except for
-
-    ``kick``: this velocity (m/s) given to the first free atom along x (every free
-    atom of the first free layer, in a crystal), which launches a pulse;
-    ``temperature``: random thermal momenta (Maxwell-Boltzmann, K), from ``seed``.
-    """
-
-    kick: Vec = (0.0, 0.0, 0.0)
-    temperature: float = 0.0
-    seed: int = 0
-
-
-@dataclass(frozen=True)
-class PullCfg:
-    """A steady force (N, along +x) on the last face (x end), shared by its atoms."""
-
-    force: float = 0.0
-
-
-@dataclass(frozen=True)
-class Config:
-    scene: SceneCfg = field(default_factory=SceneCfg)
-    camera: CameraCfg = field(default_factory=CameraCfg)
-    physics: PhysicsCfg = field(default_factory=PhysicsCfg)
-    damping: DampingCfg = field(default_factory=DampingCfg)
-    drive: DriveCfg = field(default_factory=DriveCfg)
-    holder: HolderCfg = field(default_factory=HolderCfg)
-    spring: SpringCfg = field(default_factory=SpringCfg)
-    ball: BallCfg = field(default_factory=BallCfg)
-    render: RenderCfg = field(default_factory=RenderCfg)
-    lattice: LatticeCfg | None = None      # a lattice config: atoms and bonds, no ball
-    bond: BondCfg = field(default_factory=BondCfg)
-    atom: AtomCfg = field(default_factory=AtomCfg)
-    start: StartCfg = field(default_factory=StartCfg)
-    pull: PullCfg = field(default_factory=PullCfg)
-    source: str = "<defaults>"
-
-    @property
-    def driven(self) -> bool:
-        return self.drive.type != "none"
-
-    @property
-    def is_lattice(self) -> bool:
-        """A chain or crystal of atoms ([lattice]) rather than the page's ball on a spring."""
-        return self.lattice is not None
-
-    def system(self, omega: Any = None) -> System:
-        """The physics system. A lattice config's is :func:`springscene.lattice.build`'s.
-
-        Otherwise the ball on its spring: node 0 the fixed holder, node 1 the ball, spring 0 from holder to ball.
-
-        With ``omega`` an array of N drive frequencies, N independent copies side by
-        side (holder 2c, ball 2c+1, spring c), copy c driven at ``omega[c]``: a
-        resonance sweep as one system.
-        """
-        if self.is_lattice:
-            from . import lattice
-
-            return lattice.build(self)
-        w = np.atleast_1d(np.asarray(self.drive.omega if omega is None else omega, float))
-        n = len(w) if omega is not None else 1
-        holder, ball = np.arange(0, 2 * n, 2), np.arange(1, 2 * n, 2)
-        pos = np.empty((2 * n, 3))
-        pos[holder], pos[ball] = self.holder.pos, self.ball.pos
-        p = np.zeros((2 * n, 3))
-        p[ball] = self.ball.p
-        drive = None
-        if self.driven:
-            nodes = holder if self.drive.type == "support" else ball
-            drive = Drive(self.drive.type, nodes, self.drive.amplitude, w, self.drive.direction)
-        s = self.spring
-        return System(
-            pos=pos, p=p, m=np.tile([1.0, self.ball.m], n), fixed=np.tile([True, False], n),
-            i=holder, j=ball, k=s.k, L0=s.L0, k3=s.k3, yield_stretch=s.yield_stretch,
-            g=self.physics.g, dt=self.physics.dt, b=np.tile([0.0, self.damping.b], n),
-            drive=drive, integrator=self.physics.integrator,
-        )
-
+from .model import integrators, physics
+from .model.lattice import first_free_layer, fixed_mask
+from .settings import (BOND_STYLES, COLOR_BY, FIXED_MODES, AtomCfg, BallCfg, BondCfg,  # noqa: F401
+                       CameraCfg, Config, DampingCfg, DriveCfg, HolderCfg, LatticeCfg, PhysicsCfg,
+                       PullCfg, RenderCfg, SceneCfg, SpringCfg, StartCfg, Vec)
 
 # ---- checking -------------------------------------------------------------------------
 
@@ -498,37 +282,23 @@ def _check_lattice(cfg: Config, where: Callable[..., str]) -> None:
         if nx < 2:
             raise UserError(f"{src}: [pull] force needs at least two atoms along x, "
                             f"[lattice] shape has {nx}")
-    from . import lattice
-
-    held = lattice.fixed_mask(lat.shape, lat.fixed)
+    held = fixed_mask(lat.shape, lat.fixed)
     if held.all():
         raise UserError(f"{src}: [lattice] fixed = {lat.fixed!r} holds every atom of shape "
                         f"{list(lat.shape)}: nothing can move")
     if any(cfg.start.kick) and cfg.start.temperature > 0:
         raise UserError(f"{src}: [start] takes a kick or a temperature, not both (the kick's "
                         "energy would be counted as heat and the heat would blur the pulse)")
-    if any(cfg.start.kick) and len(lattice.first_free_layer(lat.shape, held)) == 0:
+    if any(cfg.start.kick) and len(first_free_layer(lat.shape, held)) == 0:
         raise UserError(f"{src}: [start] kick has no free atom to kick")
 
 
 def stability_problem(cfg: Config) -> str | None:
     """Why the config's step would make its integrator blow up, with a step that would not."""
-    name, dt = cfg.physics.integrator, cfg.physics.dt
-    omega, gamma = physics.mode_bounds(cfg.system())
-    omega, gamma = np.unique(np.column_stack([omega, gamma]), axis=0).T   # a lattice repeats them
-    if integrators.stable(name, omega, gamma, dt):
-        return None
-    w, gm = float(omega.max()), float(gamma.max())
-    h_max = integrators.largest_stable_step(name, omega, gamma, dt)
-    rule = {"euler-cromer": "needs omega*dt < 2", "verlet": "needs omega*dt < 2",
-            "rk4": "needs omega*dt < 2.83",
-            "euler": f"grows the amplitude more than {integrators.EULER_MAX_GROWTH_PER_PERIOD:g}x "
-                     "per period"}[name]
-    damped = f", b/2m = {gm:.3g} /s" if gm > 0 else ""
+    omega, gamma = physics.mode_bounds(build.system(cfg))
     what = "a bound on the fastest mode's omega" if cfg.is_lattice else "omega = sqrt(k/m)"
-    return (f"dt = {dt:g} s is unstable for {name} ({what} = {w:.4g} rad/s, "
-            f"omega*dt = {w * dt:.3g}{damped}; {name} {rule}); "
-            f"use dt <= {integrators.suggest_step(h_max):g} s")
+    return integrators.stability_problem(cfg.physics.integrator, omega, gamma, cfg.physics.dt,
+                                         what)
 
 
 def load(path: str | Path) -> Config:

@@ -1,7 +1,12 @@
-"""The jobs a user runs: simulate to CSV, a still at a time, a video in real time.
+"""The render pipeline: a config run through its physics and drawn, to CSV, PNG or video.
 
-Each is a plain function a notebook can call; the command-line app only parses
-arguments and maps errors to exit codes.
+The path of a video: :func:`render_video` checks the output and the timing
+(:func:`springscene.model.timeline.frame_steps`), builds the system
+(:func:`springscene.build.system`), plays it frame by frame
+(:func:`springscene.model.timeline.play`), hands each state to the scene
+(:meth:`springscene.view.scene.Scene.update`, :meth:`~springscene.view.scene.SceneBase.frame`)
+and the overlays, and writes the frames (:class:`springscene.outputs.VideoWriter`).
+The scene only draws what it is handed; nothing here draws.
 """
 
 from __future__ import annotations
@@ -13,43 +18,22 @@ from pathlib import Path
 
 import numpy as np
 
-from . import config, physics
-from .config import Config
+from tqdm import tqdm
+
+from . import build, config
 from .errors import UserError
+from .model import physics
+from .model.timeline import frame_steps, play, step_at
 from .outputs import (VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps,
                       write_png)
+from .settings import Config
+from .view.lattice_scene import COLOR_QUANTILE, LatticeScene, color_scale
+from .view.overlay import Overlays
+from .view.scene import Scene
 
 CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E", "E_thermal")
 # a lattice: the whole crystal per step (total momentum, energies)
 LATTICE_CSV_HEADER = ("t", "px", "py", "pz", "K", "Us", "E", "E_thermal")
-
-
-MAX_STEPS = 10_000_000    # about 3 minutes of stepping; past it a typo, not a plan
-MAX_FRAMES = 360_000      # two hours at 50 fps
-
-
-def step_at(time_s: float, dt: float, flag: str = "--time") -> int:
-    """Index of the step nearest ``time_s`` (>= 0, within :data:`MAX_STEPS`)."""
-    time_s = config.check_flag(flag, config.non_negative, time_s)
-    if time_s / dt > MAX_STEPS:
-        raise UserError(f"{flag} {time_s:g} is {time_s / dt:.3g} steps of dt = {dt:g} s; "
-                        f"the limit is {MAX_STEPS:,}")
-    return int(round(time_s / dt))
-
-
-def frame_steps(duration: float, fps: int, dt: float, speed: float = 1.0) -> np.ndarray:
-    """Step index of each video frame: frame f shows the step nearest t = f speed / fps.
-
-    ``speed`` is simulated seconds per video second (1: real time), so the video
-    lasts ``duration / speed`` seconds.
-    """
-    step_at(duration, dt, "--duration")
-    frames = duration / speed * fps
-    if frames > MAX_FRAMES:
-        raise UserError(f"--duration {duration:g} at --fps {fps} and speed {speed:g} is "
-                        f"{frames:.3g} frames; the limit is {MAX_FRAMES:,}")
-    n = int(round(frames))
-    return np.rint(np.arange(n) * (speed / (fps * dt))).astype(np.int64)
 
 
 # ---- simulate ---------------------------------------------------------------------------
@@ -62,8 +46,8 @@ def simulate(cfg: Config, duration: float | None = None):
     cfg = config.override(cfg, "render", duration=duration)
     n = step_at(cfg.render.duration, cfg.physics.dt, "--duration")
     if cfg.is_lattice:
-        return lattice_totals(cfg.system(), n)
-    return physics.run(cfg.system(), n)
+        return lattice_totals(build.system(cfg), n)
+    return physics.run(build.system(cfg), n)
 
 
 def lattice_totals(system: physics.System, n_steps: int) -> np.ndarray:
@@ -99,15 +83,40 @@ def write_csv(traj, out: str | Path) -> Path:
 
 
 def make_scene(cfg: Config, system: physics.System, antialias: bool = True,
-               backend: str = "auto"):
-    """The off-screen scene for a config: the page's holder, spring and ball, or a lattice."""
-    if cfg.is_lattice:
-        from .lattice_scene import LatticeScene
+               backend: str = "auto", color_range: tuple[float, float] | None = None):
+    """The off-screen scene for a config: the page's holder, spring and ball, or a lattice.
 
-        return LatticeScene(cfg, system, antialias=antialias, backend_name=backend)
-    from .scene import Scene
+    The scene is handed the config's sections it draws with, never the whole config. A
+    lattice coloured by ``[render] color_by`` gets ``color_range``, or else the video's
+    (:func:`lattice_color_range`, ``system`` counted when later than the video's end).
+    """
+    if not cfg.is_lattice:
+        return Scene(system, canvas=cfg.scene, camera=cfg.camera, holder=cfg.holder,
+                     spring=cfg.spring, ball=cfg.ball, antialias=antialias, backend_name=backend)
+    if cfg.render.color_by != "none" and color_range is None:
+        color_range = lattice_color_range(cfg, system)
+    return LatticeScene(system, lattice=build.lattice(cfg), canvas=cfg.scene, camera=cfg.camera,
+                        atom=cfg.atom, bond=cfg.bond, color_by=cfg.render.color_by,
+                        color_range=color_range, antialias=antialias, backend_name=backend)
 
-    return Scene(cfg, system, antialias=antialias, backend_name=backend)
+
+def lattice_color_range(cfg: Config, system: physics.System | None = None,
+                        quantile: float = COLOR_QUANTILE) -> tuple[float, float]:
+    """The fixed colour range of a lattice config's ``[render] color_by`` for its whole video.
+
+    A fresh copy of the config's system is played over the video's frames
+    (``[render]`` duration, fps, speed) and :func:`springscene.view.lattice_scene.color_scale`
+    takes the range from them; a still's ``system`` later than the video's last frame is
+    counted too.
+    """
+    r = cfg.render
+    steps = frame_steps(r.duration, r.fps, cfg.physics.dt, r.speed)
+    played = build.system(cfg)
+    n_values = len(steps) * int((~played.fixed).sum())
+    last = int(steps[-1]) if len(steps) else -1
+    later = system if system is not None and system.steps > last else None
+    return color_scale(r.color_by, play(played, steps), n_values, build.lattice(cfg), later,
+                       quantile)
 
 
 # ---- still and video --------------------------------------------------------------------
@@ -117,12 +126,26 @@ def still(cfg: Config, time_s: float, out: str | Path | None = None, *,
     """The scene at the step nearest ``time_s`` as an (h, w, 3) image; written as PNG to ``out``."""
     path = check_output(out, (".png",)) if out is not None else None
     n = step_at(time_s, cfg.physics.dt)
-    system = physics.step(cfg.system(), n)
+    system = physics.step(build.system(cfg), n)
     with make_scene(cfg, system, antialias=antialias, backend=backend) as scene:
         image = scene.frame()
     if path is not None:
         write_png(path, image)
     return image
+
+
+def make_overlays(cfg: Config, overlays: tuple[str, ...] = ()) -> Overlays:
+    """The overlays of a render of ``cfg``; the graph and the energy bars are handed a
+    pre-run of the same (deterministic) system to the video's end, which fixes their axes."""
+    trajectory = None
+    if "graph" in overlays or "energy" in overlays:
+        if cfg.is_lattice:
+            raise UserError("--overlay: graph and energy follow the page's single ball; "
+                            "a [lattice] config takes only time")
+        trajectory = physics.run(build.system(cfg), step_at(cfg.render.duration, cfg.physics.dt,
+                                                            "--duration"))
+    return Overlays(cfg.scene, overlays, trajectory, duration=cfg.render.duration,
+                    speed=cfg.render.speed)
 
 
 @dataclass
@@ -158,21 +181,15 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     if len(steps) == 0:
         raise UserError(f"--duration {duration:g} at --fps {fps} gives no frame")
     check_video_fps(path, fps)
-    from tqdm import tqdm
-
-    from .overlay import Overlays
-
-    system = cfg.system()
+    system = build.system(cfg)
     start = time.perf_counter()
-    # graph and energy panels pre-run the same (deterministic) system to fix their axes
-    panels = Overlays(cfg, overlays)
+    panels = make_overlays(cfg, overlays)
     with make_scene(cfg, system, antialias=antialias, backend=backend) as scene, \
             atomic_path(path) as tmp:
         with VideoWriter(tmp, fps, panels.size) as writer:
             loop_start = time.perf_counter()
-            for target in tqdm(steps, desc=path.name, unit="frame", disable=not progress,
-                               leave=False):
-                physics.step(system, int(target) - system.steps)
+            for system in play(system, tqdm(steps, desc=path.name, unit="frame",
+                                            disable=not progress, leave=False)):
                 scene.update(system)
                 panels.update_scene(scene, system)
                 writer.write(panels.compose(scene.frame(), system))

@@ -9,7 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from springscene import backend, config
+from springscene import config
+from springscene.view import backend
 
 ROOT = Path(__file__).resolve().parent.parent
 WIKI = ROOT / "configs" / "wiki.toml"

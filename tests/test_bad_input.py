@@ -98,7 +98,7 @@ def test_unwritable_output(tmp_path):
 
 def test_osmesa_missing_is_one_line(monkeypatch):
     """A backend whose library is absent is refused before VTK can crash."""
-    from springscene import backend
+    from springscene.view import backend
     from springscene.errors import UserError
 
     monkeypatch.setattr(backend, "library_present", lambda name: False)

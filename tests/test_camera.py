@@ -5,7 +5,7 @@ import math
 import numpy as np
 import pytest
 
-from springscene import camera
+from springscene.view import camera
 
 
 def test_distance_is_sqrt3_range_for_fov_60():

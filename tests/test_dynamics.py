@@ -11,7 +11,9 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, WIKI, run_cli
-from springscene import analysis, config, integrators, physics, sweep, theory
+from springscene import build, config
+from springscene.model import integrators, physics
+from springscene.science import analysis, sweep, theory
 from springscene.errors import UserError
 
 DAMPED = ROOT / "configs" / "damped.toml"
@@ -34,7 +36,7 @@ def with_(cfg, **sections):
 def displacement(cfg, n_steps):
     """Simulated displacement from equilibrium along the line of motion, and the closed form."""
     osc = theory.Oscillator.from_config(cfg)
-    traj = physics.run(cfg.system(), n_steps)
+    traj = physics.run(build.system(cfg), n_steps)
     x = (traj.pos - np.asarray(osc.equilibrium)) @ np.asarray(osc.axis)
     return traj, x, osc.x(traj.t), osc
 
@@ -48,7 +50,7 @@ def test_measured_global_order(wiki, name, order):
     errors = []
     for dt in dts:
         cfg = with_(wiki, physics=dict(integrator=name, dt=float(dt)))
-        s = physics.step(cfg.system(), int(round(1.0 / dt)))
+        s = physics.step(build.system(cfg), int(round(1.0 / dt)))
         osc = theory.Oscillator.from_config(cfg)
         errors.append(abs((s.pos[1] - osc.equilibrium) @ np.asarray(osc.axis) - osc.x(1.0)))
     slope = np.polyfit(np.log(dts), np.log(errors), 1)[0]
@@ -63,7 +65,7 @@ def test_energy_behaviour_of_each_integrator(wiki):
     osc_energy = 0.5 * 15 * 0.02 ** 2
     drift = {}
     for name in INTEGRATORS:
-        traj = physics.run(with_(wiki, physics=dict(integrator=name)).system(), n)
+        traj = physics.run(build.system(with_(wiki, physics=dict(integrator=name))), n)
         per = int(round(T / 0.01))
         first, last = traj.E[:per].mean(), traj.E[-per:].mean()
         drift[name] = (last - first) / osc_energy
@@ -160,8 +162,8 @@ def test_damped_energy_bookkeeping_with_spring(wiki):
     osc_energy = 0.5 * 15 * 0.02 ** 2
     for dt in (0.01, 0.001):
         cfg = with_(wiki, damping=dict(b=0.1), physics=dict(dt=dt))
-        traj = physics.run(cfg.system(), int(round(10 / dt)))
-        free = physics.run(with_(wiki, physics=dict(dt=dt)).system(), int(round(10 / dt)))
+        traj = physics.run(build.system(cfg), int(round(10 / dt)))
+        free = physics.run(build.system(with_(wiki, physics=dict(dt=dt))), int(round(10 / dt)))
         wobble = np.abs(traj.total - traj.total[0]).max()
         assert wobble <= 1.05 * np.abs(free.E - free.E[0]).max()
         assert wobble < 20 * dt * osc_energy
@@ -172,7 +174,7 @@ def test_damped_energy_bookkeeping_with_spring(wiki):
 def test_overdamped_is_stable_with_any_drag(wiki):
     """Euler-Cromer's drag acts on the mean momentum, so drag alone cannot blow up."""
     cfg = with_(wiki, damping=dict(b=200.0))             # b dt / m = 20
-    traj = physics.run(cfg.system(), 500)
+    traj = physics.run(build.system(cfg), 500)
     assert np.all(np.isfinite(traj.pos))
     assert abs(traj.pos[-1, 1] - theory.Oscillator.from_config(cfg).equilibrium[1]) < 0.02
 
@@ -195,9 +197,9 @@ def test_sweep_is_one_batch_equal_to_single_runs(wiki):
     """Copy c of the batched sweep system moves bit for bit like a run driven at omega[c]."""
     cfg = config.load(DRIVEN)
     omega = np.array([8.0, 11.5, 12.2, 15.0])
-    batch = physics.step(cfg.system(omega=omega), 300)
+    batch = physics.step(build.system(cfg, omega=omega), 300)
     for c, w in enumerate(omega):
-        single = physics.step(with_(cfg, drive=dict(omega=float(w))).system(), 300)
+        single = physics.step(build.system(with_(cfg, drive=dict(omega=float(w)))), 300)
         assert np.array_equal(batch.pos[2 * c:2 * c + 2], single.pos)
         assert np.array_equal(batch.p[2 * c:2 * c + 2], single.p)
 
@@ -240,7 +242,7 @@ def test_stiffening_shortens_the_period_with_amplitude(wiki):
     periods = []
     for dy in (0.005, 0.04):
         cfg = with_(wiki, spring=dict(k3=3000.0), ball=dict(pos=(0, -(0.1 + 0.98 / 15 + dy), 0)))
-        traj = physics.run(cfg.system(), 1000)
+        traj = physics.run(build.system(cfg), 1000)
         y = traj.pos[:, 1]
         periods.append(analysis.period_from_crossings(traj.t, y - (y.max() + y.min()) / 2))
     assert periods[1] < 0.99 * periods[0]   # a stiffer spring at larger stretch
@@ -256,7 +258,7 @@ def test_permanent_set_beyond_elastic_limit(name):
     # afterwards it oscillates about the new equilibrium, mg/k below the new L0
     assert m["equilibrium_stretch"] == pytest.approx(0.98 / 15, rel=0.001)
     assert m["amplitude"] == pytest.approx(t["amplitude"], rel=0.01)
-    traj = physics.run(cfg.system(), 1000)
+    traj = physics.run(build.system(cfg), 1000)
     assert traj.L0[-1] == pytest.approx(0.1 + m["permanent_set"], rel=1e-9)
     assert np.all(np.diff(traj.L0) >= 0)
     # the work of the set went to heat: the total is kept within the integrator's error
@@ -269,9 +271,9 @@ def test_permanent_set_beyond_elastic_limit(name):
 
 def test_below_the_limit_nothing_yields(wiki):
     cfg = with_(wiki, spring=dict(yield_stretch=0.2))
-    traj = physics.run(cfg.system(), 500)
+    traj = physics.run(build.system(cfg), 500)
     assert np.all(traj.L0 == 0.1) and np.all(traj.E_thermal == 0)
-    ref = physics.run(wiki.system(), 500)
+    ref = physics.run(build.system(wiki), 500)
     assert np.array_equal(traj.pos, ref.pos)             # Hooke's law untouched below it
 
 

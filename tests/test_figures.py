@@ -20,7 +20,10 @@ import pytest
 
 from conftest import BASELINES, ROOT, WIKI, run_cli
 from imagecompare import check
-from springscene import config, figures, render, sweep, theory
+from springscene import build, config, figures, render
+from springscene.figures.files import save_figure
+from springscene.science import sweep, theory
+from springscene.view.plotstyle import figure_image
 
 FIGS = BASELINES / "figures"
 
@@ -57,43 +60,43 @@ def hooke():
 
 def test_position_figure(wiki_cfg, traj, regen):
     fig = figures.position_figure(wiki_cfg, traj, measured_period=0.5127)
-    img = figures.figure_image(fig)
+    img = figure_image(fig)
     assert img.shape == (560, 800, 3)
     check(img, FIGS / "position.png", regen)
 
 
 def test_energy_figure(wiki_cfg, traj, regen):
-    img = figures.figure_image(figures.energy_figure(wiki_cfg, traj))
+    img = figure_image(figures.energy_figure(wiki_cfg, traj))
     assert img.shape == (600, 800, 3)
     check(img, FIGS / "energy.png", regen)
 
 
 def test_phase_figure(wiki_cfg, traj, damped, regen):
     dcfg, _, dtraj = damped
-    img = figures.figure_image(figures.phase_figure(wiki_cfg, traj, damped=(dcfg, dtraj)))
+    img = figure_image(figures.phase_figure(wiki_cfg, traj, damped=(dcfg, dtraj)))
     check(img, FIGS / "phase.png", regen)
 
 
 def test_damped_figure(damped, regen):
     dcfg, demo, dtraj = damped
-    img = figures.figure_image(figures.damped_figure(dcfg, dtraj, demo=demo, measured_rate=0.5))
+    img = figure_image(figures.damped_figure(dcfg, dtraj, demo=demo, measured_rate=0.5))
     check(img, FIGS / "damped.png", regen)
 
 
 def test_resonance_figure(resonance, regen):
     _, added, res = resonance
-    img = figures.figure_image(figures.resonance_figure(res, demo="demo " + " and ".join(added)))
+    img = figure_image(figures.resonance_figure(res, demo="demo " + " and ".join(added)))
     check(img, FIGS / "resonance.png", regen)
 
 
 def test_integrators_figure(wiki_cfg, runs, regen):
-    img = figures.figure_image(figures.integrators_figure(wiki_cfg, runs))
+    img = figure_image(figures.integrators_figure(wiki_cfg, runs))
     check(img, FIGS / "integrators.png", regen)
 
 
 def test_hooke_figure(hooke, regen):
     hcfg, htraj = hooke
-    img = figures.figure_image(figures.hooke_figure(hcfg, htraj))
+    img = figure_image(figures.hooke_figure(hcfg, htraj))
     assert img.shape == (780, 800, 3)
     check(img, FIGS / "hooke.png", regen)
 
@@ -108,7 +111,7 @@ def test_baseline_tolerance_catches_data_off_by_two_percent(resonance):
     _, added, res = resonance
     off = copy.copy(res)
     off.amplitude = res.amplitude * 1.02
-    img = figures.figure_image(figures.resonance_figure(off, demo="demo " + " and ".join(added)))
+    img = figure_image(figures.resonance_figure(off, demo="demo " + " and ".join(added)))
     bad, mean = compare(img, iio.imread(FIGS / "resonance.png")[..., :3])
     assert bad > MAX_BAD_FRACTION or mean > MAX_MEAN_DIFF
 
@@ -118,7 +121,7 @@ def test_filmstrip_figure_lays_tiles_side_by_side():
     tile[200:240, 35:75] = (255, 0, 0)                         # a "ball" below the line
     strip = figures.Filmstrip([tile] * 6, [0.0, 0.09, 0.17, 0.26, 0.34, 0.43], 0.513, 150,
                               [figures._fraction_label(Fraction(c, 6)) for c in range(6)])
-    img = figures.figure_image(figures.filmstrip_figure(strip, gap=8))
+    img = figure_image(figures.filmstrip_figure(strip, gap=8))
     assert img.shape == (300 + 8 + 64, 6 * 110 + 7 * 8, 3)
     body = img[64:]
     assert (body[220, 8 + 55] == (255, 0, 0)).all()           # tiles at their own pixels
@@ -131,23 +134,23 @@ def test_filmstrip_figure_lays_tiles_side_by_side():
 # ---- determinism --------------------------------------------------------------------------
 
 def test_saved_figures_are_the_same_bytes_every_time(tmp_path, wiki_cfg, traj):
-    first = figures.save_figure(figures.energy_figure(wiki_cfg, traj), tmp_path, "a")
-    second = figures.save_figure(figures.energy_figure(wiki_cfg, traj), tmp_path, "b")
+    first = save_figure(figures.energy_figure(wiki_cfg, traj), tmp_path, "a")
+    second = save_figure(figures.energy_figure(wiki_cfg, traj), tmp_path, "b")
     for p, q in zip(first, second):
         assert p.read_bytes() == q.read_bytes(), p.name
     svg = first[1].read_text()
     assert "<dc:date>" not in svg and "Matplotlib v" not in svg
     # the PNG is exactly what figure_image (the baselines) sees
     png = iio.imread(first[0])[..., :3]
-    assert np.array_equal(png, figures.figure_image(figures.energy_figure(wiki_cfg, traj)))
+    assert np.array_equal(png, figure_image(figures.energy_figure(wiki_cfg, traj)))
 
 
 def test_style_ignores_the_users_matplotlibrc(wiki_cfg, traj):
     import matplotlib
 
-    base = figures.figure_image(figures.phase_figure(wiki_cfg, traj))
+    base = figure_image(figures.phase_figure(wiki_cfg, traj))
     with matplotlib.rc_context({"font.size": 30, "axes.facecolor": "black", "lines.linewidth": 9}):
-        again = figures.figure_image(figures.phase_figure(wiki_cfg, traj))
+        again = figure_image(figures.phase_figure(wiki_cfg, traj))
     assert np.array_equal(base, again)
 
 
@@ -206,7 +209,7 @@ def test_integrators_energy_error(wiki_cfg, runs):
 def test_damped_demo_decays_at_gamma(wiki_cfg, damped):
     dcfg, demo, dtraj = damped
     assert demo and dcfg.damping.b == figures.DEMO_B and not dcfg.driven
-    from springscene.analysis import peak_decay_rate
+    from springscene.science.analysis import peak_decay_rate
 
     osc = theory.Oscillator.from_config(dcfg)
     y, _ = figures.along(dcfg, dtraj)

@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from springscene.geometry import CHORDS_PER_COIL, TUBE_SIDES, HelixFrame, HelixTube
+from springscene.view.geometry import CHORDS_PER_COIL, TUBE_SIDES, HelixFrame, HelixTube
 
 
 def test_hanging_spring_frame_is_vpythons():

@@ -9,8 +9,9 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, run_cli
-from springscene import config, lattice, physics, render
-from springscene.config import BOLTZMANN
+from springscene import build, config, render
+from springscene.model import lattice, physics
+from springscene.model.constants import BOLTZMANN
 from springscene.errors import UserError
 
 CONFIGS = ROOT / "configs"
@@ -38,7 +39,7 @@ def generic_copy(s: physics.System) -> physics.System:
     ("chain-lead", 0.207 / 6.02214076e23, 3.112e-10, 1187.1),
 ])
 def test_material_numbers(name, m, d, v):
-    lat = lattice.Lattice.from_config(config.load(CONFIGS / f"{name}.toml"))
+    lat = build.lattice(config.load(CONFIGS / f"{name}.toml"))
     assert lat.m == pytest.approx(m, rel=1e-12)
     assert lat.d == pytest.approx(d, rel=1e-3)
     assert lat.d ** 3 * {"chain-aluminum": 2700.0, "chain-lead": 11400.0}[name] == \
@@ -50,8 +51,8 @@ def test_material_numbers(name, m, d, v):
 @pytest.mark.parametrize("name", ["chain", "chain-aluminum", "chain-lead", "crystal", "bar"])
 def test_configs_build(name):
     cfg = config.load(CONFIGS / f"{name}.toml")
-    s = cfg.system()
-    lat = lattice.Lattice.from_config(cfg)
+    s = build.system(cfg)
+    lat = build.lattice(cfg)
     assert s.grid == lat.shape and s.n_nodes == lat.n_atoms
     nx, ny, nz = lat.shape
     assert len(s.i) == (nx - 1) * ny * nz + nx * (ny - 1) * nz + nx * ny * (nz - 1)
@@ -74,7 +75,7 @@ def test_fixed_modes():
 
 def test_kick_goes_to_the_first_free_layer():
     cfg = crystal_cfg((6, 4, 4), "outer", start={"kick": [2.0, 0.0, 0.0]})
-    s = cfg.system()
+    s = build.system(cfg)
     moving = np.flatnonzero(np.abs(s.p).sum(axis=1) > 0)
     idx = np.indices((6, 4, 4)).reshape(3, -1)
     assert set(idx[0, moving]) == {1}                       # the first x layer that is free
@@ -84,24 +85,24 @@ def test_kick_goes_to_the_first_free_layer():
 
 def test_thermal_start():
     T = 1e22       # K, for unit masses: p ~ 0.4
-    held = crystal_cfg(start={"temperature": T, "seed": 3}).system()
+    held = build.system(crystal_cfg(start={"temperature": T, "seed": 3}))
     free = held.free
     K = np.sum(held.p[free] ** 2) / 2
     assert K == pytest.approx(1.5 * len(free) * BOLTZMANN * T, rel=1e-12)
     assert not held.p[held.fixed].any()
-    loose = crystal_cfg(fixed="none", start={"temperature": T, "seed": 3}).system()
+    loose = build.system(crystal_cfg(fixed="none", start={"temperature": T, "seed": 3}))
     np.testing.assert_allclose(loose.p.sum(axis=0), 0.0, atol=1e-13)     # no drift
     K = np.sum(loose.p ** 2) / 2
     assert K == pytest.approx(1.5 * (loose.n_nodes - 1) * BOLTZMANN * T, rel=1e-12)
-    again = crystal_cfg(start={"temperature": T, "seed": 3}).system()
-    other = crystal_cfg(start={"temperature": T, "seed": 4}).system()
+    again = build.system(crystal_cfg(start={"temperature": T, "seed": 3}))
+    other = build.system(crystal_cfg(start={"temperature": T, "seed": 4}))
     np.testing.assert_array_equal(held.p, again.p)
     assert not np.array_equal(held.p, other.p)
 
 
 def test_pull_is_on_the_last_face():
     cfg = config.load(CONFIGS / "bar.toml")
-    s = cfg.system()
+    s = build.system(cfg)
     face = lattice.last_layer(s.grid)
     assert s.F_ext[:, 0].sum() == pytest.approx(cfg.pull.force, rel=1e-12)
     np.testing.assert_array_equal(np.flatnonzero(s.F_ext[:, 0]), face)
@@ -116,7 +117,7 @@ def test_pull_is_on_the_last_face():
 def test_grid_stencil_matches_bincount(shape, integrator):
     cfg = crystal_cfg(shape, "none", start={"temperature": 3e21, "seed": 1},
                       physics={"integrator": integrator, "dt": 0.02})
-    grid = cfg.system()
+    grid = build.system(cfg)
     plain = generic_copy(grid)
     assert plain.grid is None
     np.testing.assert_allclose(physics.forces(grid, grid.pos, 0.0),
@@ -128,7 +129,7 @@ def test_grid_stencil_matches_bincount(shape, integrator):
 
 
 def test_grid_stencil_with_per_bond_values_stiffening_and_yield():
-    s = crystal_cfg((4, 3, 3), "start", start={"temperature": 3e22, "seed": 2}).system()
+    s = build.system(crystal_cfg((4, 3, 3), "start", start={"temperature": 3e22, "seed": 2}))
     rng = np.random.default_rng(0)
     s.k[:] = rng.uniform(0.5, 2.0, len(s.k))
     s.L0[:] = rng.uniform(0.9, 1.1, len(s.L0))
@@ -140,11 +141,11 @@ def test_grid_stencil_with_per_bond_values_stiffening_and_yield():
     physics.step(plain, 200)
     np.testing.assert_allclose(s.pos, plain.pos, rtol=0, atol=1e-12)
     np.testing.assert_allclose(s.L0, plain.L0, rtol=0, atol=1e-12)
-    assert not np.array_equal(s.L0, generic_copy(crystal_cfg((4, 3, 3), "start").system()).L0)
+    assert not np.array_equal(s.L0, generic_copy(build.system(crystal_cfg((4, 3, 3), "start"))).L0)
 
 
 def test_grid_must_match_the_springs():
-    s = crystal_cfg((3, 3, 1), "none").system()
+    s = build.system(crystal_cfg((3, 3, 1), "none"))
     with pytest.raises(ValueError, match="grid"):
         physics.System(pos=s.pos, p=s.p, m=s.m, fixed=s.fixed, i=s.j, j=s.i, k=s.k, L0=s.L0,
                        g=s.g, dt=s.dt, grid=s.grid)
@@ -153,8 +154,8 @@ def test_grid_must_match_the_springs():
 # ---- conservation ------------------------------------------------------------------------------
 
 def test_momentum_is_conserved_in_a_free_crystal():
-    s = crystal_cfg((6, 5, 4), "none", start={"temperature": 1e22, "seed": 5},
-                    physics={"dt": 0.05}).system()
+    s = build.system(crystal_cfg((6, 5, 4), "none", start={"temperature": 1e22, "seed": 5},
+                    physics={"dt": 0.05}))
     s.p[0] += [0.3, -0.2, 0.1]                  # a moving crystal, not only a still one
     P0 = s.p.sum(axis=0).copy()
     scale = np.abs(s.p).sum()
@@ -165,8 +166,8 @@ def test_momentum_is_conserved_in_a_free_crystal():
 
 
 def test_energy_stays_bounded_with_euler_cromer():
-    s = crystal_cfg((6, 6, 6), "outer", start={"temperature": 1e21, "seed": 2},
-                    physics={"dt": 0.1}).system()
+    s = build.system(crystal_cfg((6, 6, 6), "outer", start={"temperature": 1e21, "seed": 2},
+                    physics={"dt": 0.1}))
     E0 = physics.energies(s).E
     E = []
     for _ in range(400):
@@ -176,15 +177,15 @@ def test_energy_stays_bounded_with_euler_cromer():
     assert np.abs(E - E0).max() < 0.06 * E0   # EC: off by O(omega dt), bounded, no drift...
     q = len(E) // 4
     assert abs(E[-q:].mean() - E[:q].mean()) < 0.002 * E0
-    euler = crystal_cfg((6, 6, 6), "outer", start={"temperature": 1e21, "seed": 2},
-                        physics={"dt": 0.1}).system()
+    euler = build.system(crystal_cfg((6, 6, 6), "outer", start={"temperature": 1e21, "seed": 2},
+                        physics={"dt": 0.1}))
     euler.integrator = "euler"          # (a config refuses this step for Euler)
     physics.step(euler, 200)
     assert physics.energies(euler).E > 1.5 * E0         # ...where plain Euler's energy grows
 
 
 def test_no_allocation_growth_per_step():
-    s = crystal_cfg((12, 12, 12), "outer", start={"temperature": 1e21, "seed": 2}).system()
+    s = build.system(crystal_cfg((12, 12, 12), "outer", start={"temperature": 1e21, "seed": 2}))
     tracemalloc.start()
     try:
         physics.step(s, 20)

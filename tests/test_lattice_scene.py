@@ -11,11 +11,13 @@ import pytest
 
 from conftest import BASELINES, require_backend, run_cli
 from imagecompare import check
-from springscene import camera, config, lattice, physics, render
-from springscene import lattice_scene as ls
-from springscene.geometry import HelixBatch, HelixFrame, HelixTube, frames_from_up
-from springscene.lattice_scene import LatticeScene
-from springscene.scene import AMBIENT, LIGHTS
+from springscene import build, config, render
+from springscene.model import lattice, physics
+from springscene.view import camera
+from springscene.view import lattice_scene as ls
+from springscene.view.geometry import HelixBatch, HelixFrame, HelixTube, frames_from_up
+from springscene.view.lattice_scene import LatticeScene
+from springscene.view.scene import AMBIENT, LIGHTS
 
 W, H = 450, 300
 
@@ -165,11 +167,11 @@ def test_still_matches_baseline(tmp_path, name, backend_name, regen):
 
 def test_atom_pixels_land_where_the_camera_projects():
     cfg = chain(3, bond={"style": "line"})
-    s = cfg.system()
-    with LatticeScene(cfg, s) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s) as sc:
         seen = []
         for offset in [(0, 0, 0), (0.01, 0.03, 0), (-0.02, -0.04, 0.01)]:
-            s.pos[1] = lattice.Lattice.from_config(cfg).sites()[1] + offset
+            s.pos[1] = build.lattice(cfg).sites()[1] + offset
             sc.update(s)
             col, row, n = red_box_centre(sc.frame())
             want_col, want_row = silhouette_box_centre(sc.view, s.pos[1], 0.025)
@@ -182,10 +184,10 @@ def test_atom_pixels_land_where_the_camera_projects():
 
 def test_helix_mesh_spans_atom_centre_to_centre():
     cfg = crystal(bond={"style": "helix"})
-    s = cfg.system()
+    s = build.system(cfg)
     physics.step(s, 100)
     s.pos[13] += (0.1e-10, -0.2e-10, 0.15e-10)       # a bond well off its rest direction
-    with LatticeScene(cfg, s, color_range=(0.0, 1.0)) as sc:
+    with render.make_scene(cfg, s, color_range=(0.0, 1.0)) as sc:
         h = sc.helix
         rings = np.asarray(sc.bonds.points, float).reshape(len(s.i), h.n_rings, h.sides, 3)
         centre = rings.mean(axis=2)                   # the wire's centre line
@@ -210,9 +212,9 @@ def test_helix_mesh_spans_atom_centre_to_centre():
 def test_cylinder_sticks_span_atom_centres():
     cfg = chain(2, fixed="start", bond={"style": "cylinder", "radius": 0.01},
                 atom={"radius": 0.002})
-    s = cfg.system()
+    s = build.system(cfg)
     s.pos[1] += (0.03, 0, 0)                          # a stretched bond
-    with LatticeScene(cfg, s) as sc:
+    with render.make_scene(cfg, s) as sc:
         assert np.allclose(np.asarray(sc.bonds.points), (s.pos[0] + s.pos[1]) / 2)
         img = sc.frame()
         rows, cols = np.nonzero(cyan(img))
@@ -228,8 +230,8 @@ def test_cylinder_sticks_span_atom_centres():
 @pytest.mark.parametrize("style", ["helix", "cylinder", "line"])
 def test_update_rewrites_the_same_objects_in_place(style):
     cfg = crystal(bond={"style": style})
-    s = cfg.system()
-    with LatticeScene(cfg, s, color_range=(0.0, 1000.0)) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s, color_range=(0.0, 1000.0)) as sc:
         first = sc.frame()
         ren = sc.plotter.renderer
         objects = (sc.atoms, sc.bonds, sc.atom_actor, sc.bond_actor)
@@ -255,7 +257,7 @@ def test_update_rewrites_the_same_objects_in_place(style):
 
 def test_held_atoms_are_gray_and_smaller():
     cfg = chain(3)
-    with LatticeScene(cfg, cfg.system()) as sc:
+    with render.make_scene(cfg, build.system(cfg)) as sc:
         rgb = np.asarray(sc.atoms.point_data["rgb"])
         assert (rgb[[0, 2]] == 128).all() and tuple(rgb[1]) == (255, 0, 0)
         r = np.asarray(sc.atoms.point_data["radius"])
@@ -268,8 +270,8 @@ def test_held_atoms_are_gray_and_smaller():
 
 def test_color_bar_is_drawn_with_its_title_and_scale():
     cfg = crystal()
-    s = cfg.system()
-    with LatticeScene(cfg, s) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s) as sc:
         img = sc.frame()
         bar = sc.color_bar
         assert sc.color_title == "speed (km/s)" or sc.color_title == "speed (m/s)"
@@ -279,7 +281,7 @@ def test_color_bar_is_drawn_with_its_title_and_scale():
         assert (region.max(axis=1) < 40).sum() > 50                # black labels
         box = bar.box
     plain = crystal(render={"color_by": "none"})
-    with LatticeScene(plain, plain.system()) as sc:
+    with render.make_scene(plain, build.system(plain)) as sc:
         assert sc.color_bar is None
         region = sc.frame()[box].reshape(-1, 3).astype(int)
         assert (np.abs(region - ls.colormap_table()[-1]).max(axis=1) <= 6).sum() == 0
@@ -290,7 +292,7 @@ LUT_MID = ls.LUT_SIZE // 2
 
 def test_color_bar_text_is_white_on_a_dark_background():
     cfg = crystal(scene={"background": "black"})
-    with LatticeScene(cfg, cfg.system()) as sc:
+    with render.make_scene(cfg, build.system(cfg)) as sc:
         region = sc.frame()[sc.color_bar.box]
         assert (region.min(axis=2) > 215).sum() > 50
 
@@ -298,12 +300,12 @@ def test_color_bar_text_is_white_on_a_dark_background():
 def test_atom_colours_follow_the_quantity():
     """A fast atom takes the top colour, a still one the bottom, in the arrays and the picture."""
     cfg = chain(5, render={"color_by": "speed"})
-    s = cfg.system()
+    s = build.system(cfg)
     m = s.m[1]
     s.p[1] = (0, 0, 0)
     s.p[2] = (0.5 * m, 0, 0)            # the middle of the range
     s.p[3] = (0, 2.0 * m, 0)            # beyond the top: the top colour
-    with LatticeScene(cfg, s, color_range=(0.0, 1.0)) as sc:
+    with render.make_scene(cfg, s, color_range=(0.0, 1.0)) as sc:
         rgb = np.asarray(sc.atoms.point_data["rgb"])
         assert np.array_equal(rgb[1], sc.lut[0])
         assert np.array_equal(rgb[2], sc.lut[LUT_MID])
@@ -327,8 +329,8 @@ def test_atom_colours_follow_the_quantity():
 
 def test_color_range_is_fixed_for_the_whole_video():
     cfg = chain(8, start={"kick": [0.5, 0, 0]}, render={"color_by": "speed", "duration": 2.0})
-    lo, hi = ls.color_range(cfg)
-    s = cfg.system()
+    lo, hi = render.lattice_color_range(cfg)
+    s = build.system(cfg)
     values = []
     for target in render.frame_steps(2.0, cfg.render.fps, cfg.physics.dt):
         physics.step(s, int(target) - s.steps)
@@ -337,7 +339,7 @@ def test_color_range_is_fixed_for_the_whole_video():
     assert lo == 0 and np.quantile(values, ls.COLOR_QUANTILE) <= hi <= 1.34 * values.max()
     assert hi == ls.nice_ceil(hi)                       # a round number
     # the scene keeps it while the atoms move, and make_scene (video and still) gets it
-    s = cfg.system()
+    s = build.system(cfg)
     with render.make_scene(cfg, s, antialias=False) as sc:
         assert sc.color_range == (lo, hi)
         physics.step(s, 50)
@@ -345,7 +347,7 @@ def test_color_range_is_fixed_for_the_whole_video():
         assert sc.color_range == (lo, hi)
         assert sc.unit == ("mm/s", 1e-3) and sc.color_title == "speed (mm/s)"
     # a still within the video has the video's colours, even with a faster atom ...
-    fast = cfg.system()
+    fast = build.system(cfg)
     physics.step(fast, 150)
     fast.p[3] = (3 * hi * fast.m[3], 0, 0)
     with render.make_scene(cfg, fast, antialias=False) as sc:
@@ -359,8 +361,8 @@ def test_color_range_is_fixed_for_the_whole_video():
 
 def test_displacement_is_from_each_atoms_site():
     cfg = chain(4, render={"color_by": "displacement"})
-    s = cfg.system()
-    sites = lattice.Lattice.from_config(cfg).sites()
+    s = build.system(cfg)
+    sites = build.lattice(cfg).sites()
     s.pos[1] += (0.003, 0.004, 0)
     assert ls.scalar("displacement", s, sites) == pytest.approx([0, 0.005, 0, 0])
 
@@ -385,7 +387,7 @@ def test_each_bond_style_renders_and_differs():
     images = {}
     for style in ("helix", "cylinder", "line"):
         cfg = crystal(bond={"style": style}, render={"color_by": "none"})
-        with LatticeScene(cfg, cfg.system()) as sc:
+        with render.make_scene(cfg, build.system(cfg)) as sc:
             assert sc.bond_style == style
             images[style] = sc.frame().astype(int)
             assert cyan(images[style]).sum() > 500
@@ -395,9 +397,9 @@ def test_each_bond_style_renders_and_differs():
 
 def test_auto_style_takes_helices_up_to_the_limit():
     cfg = crystal()
-    assert ls.bond_style(cfg, lattice.HELIX_MAX_BONDS) == "helix"
-    assert ls.bond_style(cfg, lattice.HELIX_MAX_BONDS + 1) == "cylinder"
-    assert ls.bond_style(crystal(bond={"style": "line"}), 10) == "line"
+    assert ls.bond_style(cfg.bond.style, ls.HELIX_MAX_BONDS) == "helix"
+    assert ls.bond_style(cfg.bond.style, ls.HELIX_MAX_BONDS + 1) == "cylinder"
+    assert ls.bond_style(crystal(bond={"style": "line"}).bond.style, 10) == "line"
 
 
 def test_helix_batch_is_helix_tube_for_each_spring():
@@ -428,8 +430,8 @@ def same_view(a: camera.View, b: camera.View) -> None:
 
 def test_default_camera_autoscale_is_vpythons():
     cfg = chain(6, bond={"style": "cylinder"})
-    s = cfg.system()
-    with LatticeScene(cfg, s) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s) as sc:
         c = cfg.camera
         want = camera.autoscale_range(sc.object_bounds(s), c.center, c.fov, W, H)
         same_view(sc.view, camera.view(c.center, c.forward, c.up, c.fov, want, W, H))
@@ -437,8 +439,8 @@ def test_default_camera_autoscale_is_vpythons():
 
 def test_oblique_camera_keeps_every_atom_in_the_picture():
     cfg = crystal(lattice={"shape": [4, 4, 4]})
-    s = cfg.system()
-    with LatticeScene(cfg, s) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s) as sc:
         v = sc.view
         fwd = (v.focal_point - v.position) / np.linalg.norm(v.focal_point - v.position)
         depth = (s.pos - v.position) @ fwd
@@ -450,14 +452,14 @@ def test_oblique_camera_keeps_every_atom_in_the_picture():
 
 def test_range_from_the_config_is_kept():
     cfg = chain(4, camera={"range": 0.5})
-    with LatticeScene(cfg, cfg.system()) as sc:
+    with render.make_scene(cfg, build.system(cfg)) as sc:
         c = cfg.camera
         same_view(sc.view, camera.view(c.center, c.forward, c.up, c.fov, 0.5, W, H))
 
 
 def test_title_and_clock_are_drawn():
     cfg = chain(4, scene={"title": "Ball and Spring Model of Matter"})
-    with LatticeScene(cfg, cfg.system()) as sc:
+    with render.make_scene(cfg, build.system(cfg)) as sc:
         img = sc.frame()
         assert (img[:30].max(axis=2) < 60).sum() > 100          # black title letters
         corner = img[:40, :120].copy()

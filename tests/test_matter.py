@@ -18,7 +18,8 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, run_cli
-from springscene import config, matter
+from springscene import config
+from springscene.science import matter
 from springscene.errors import UserError
 
 CONFIGS = ROOT / "configs"

@@ -15,8 +15,9 @@ import pytest
 
 from conftest import BASELINES, ROOT, WIKI, run_cli
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, check, compare
-from springscene import config, physics
-from springscene.overlay import ENERGY_BARS, OVERLAYS, TRACE_COLOR, Overlays, parse_overlays
+from springscene import build, config, render
+from springscene.model import physics
+from springscene.view.overlay import ENERGY_BARS, OVERLAYS, TRACE_COLOR, Overlays, parse_overlays
 
 DURATION, FPS = 0.5, 20          # frame f at t = f / 20 s: frame 5 is t = 0.25 s
 W, H = 900, 600                  # the wiki scene
@@ -54,12 +55,12 @@ def videos(tmp_path_factory):
 @pytest.fixture(scope="module")
 def layout(cfg):
     """The panels as the render lays them out (same config: same axes, same pixels)."""
-    return Overlays(cfg, ALL)
+    return render.make_overlays(cfg, ALL)
 
 
 def states(cfg, frames):
     """The system at each frame's time, as the render steps it."""
-    s = cfg.system()
+    s = build.system(cfg)
     for f in frames:
         physics.step(s, int(round(f / (FPS * cfg.physics.dt))) - s.steps)
         yield s
@@ -91,26 +92,26 @@ def test_unknown_overlay_is_bad_input(tmp_path):
 # ---- layout without a renderer ------------------------------------------------------------
 
 def test_clock_alone_keeps_the_frame(cfg):
-    ov = Overlays(cfg, ("time",))
+    ov = render.make_overlays(cfg, ("time",))
     img = np.zeros((H, W, 3), np.uint8)
     assert ov.size == (W, H) and not ov.panels
-    assert ov.compose(img, cfg.system()) is img
+    assert ov.compose(img, build.system(cfg)) is img
 
 
 def test_frame_size_per_overlay(cfg):
-    assert Overlays(cfg, ("graph",)).size == (900, 600 + 240)
-    assert Overlays(cfg, ("energy",)).size == (900 + 320, 600)
-    assert Overlays(cfg, ALL).size == (900 + 320, 600 + 240)
+    assert render.make_overlays(cfg, ("graph",)).size == (900, 600 + 240)
+    assert render.make_overlays(cfg, ("energy",)).size == (900 + 320, 600)
+    assert render.make_overlays(cfg, ALL).size == (900 + 320, 600 + 240)
 
 
 def test_narrow_scene_gets_a_readable_graph():
     small = config.from_dict({"scene": {"width": 200, "height": 150, "background": "black"},
                               "render": {"duration": 1.0}})
-    assert Overlays(small, ("energy",)).size == (200 + 320, 360)   # bars at least 360 tall
-    ov = Overlays(small, ("graph", "energy"))
+    assert render.make_overlays(small, ("energy",)).size == (200 + 320, 360)   # bars at least 360 tall
+    ov = render.make_overlays(small, ("graph", "energy"))
     assert ov.size == (360 + 320, 150 + 240)     # the graph at least 360 wide
     img = np.full((150, 200, 3), 7, np.uint8)
-    frame = ov.compose(img, small.system())
+    frame = ov.compose(img, build.system(small))
     assert frame.shape == (390, 680, 3)
     assert np.array_equal(frame[:150, :200], img)
     assert (frame[:150, 200:360] == 0).all()            # padded with the scene's black
@@ -121,10 +122,10 @@ def test_energy_bars_thermal_grows_total_flat():
     """Damped: the thermal bar grows, the total (K + Us + Ug + thermal) stays put."""
     damped = config.override(config.load(ROOT / "configs" / "damped.toml"), "render",
                              duration=4.0)
-    ov = Overlays(damped, ("energy",))
+    ov = render.make_overlays(damped, ("energy",))
     x0 = W
     heights = []
-    s = damped.system()
+    s = build.system(damped)
     for n in (0, 200, 400):
         physics.step(s, n - s.steps)
         frame = ov.compose(np.zeros((H, W, 3), np.uint8), s)
@@ -212,11 +213,11 @@ def test_energy_bars_follow_the_energies(videos, layout, cfg):
 def test_overlay_frame_matches_baseline(videos, cfg, regen):
     """The composed frame at t = 0.25 s, lossless, against a committed baseline; the
     video's frame 5 is that frame up to H.264 noise, and its scene part is the still."""
-    from springscene.scene import Scene
+    from springscene.view.scene import Scene
 
-    ov = Overlays(cfg, ALL)
+    ov = render.make_overlays(cfg, ALL)
     s = next(states(cfg, [5]))
-    with Scene(cfg, s) as scene:
+    with render.make_scene(cfg, s) as scene:
         ov.update_scene(scene, s)
         frame = ov.compose(scene.frame(), s)
     assert frame.shape == (H + 240, W + 320, 3)

@@ -5,7 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from springscene import config, physics
+from springscene import build, config
+from springscene.model import physics
 
 CFG = config.load("configs/wiki.toml")
 K, M, L0, G, DT = 15.0, 0.10, 0.10, 9.8, 0.01
@@ -59,7 +60,7 @@ def wiki_loop(n_steps, ball_pos, ball_p=(0, 0, 0), vector=vector, mag=mag, norm=
 
 
 def test_config_values_are_the_pages():
-    s = CFG.system()
+    s = build.system(CFG)
     assert (s.k[0], s.L0[0], s.m[1], s.dt) == (15.0, 0.10, 0.10, 0.01)
     assert tuple(s.g) == (0.0, -9.8, 0.0)
     # starts at rest 0.02 m below equilibrium
@@ -68,7 +69,7 @@ def test_config_values_are_the_pages():
 
 
 def test_first_step_by_hand():
-    s = CFG.system()
+    s = build.system(CFG)
     y0 = s.pos[1, 1]
     physics.step(s)
     Fs_y = -K * (abs(y0) - L0) * (y0 / abs(y0))    # spring pulls up
@@ -87,7 +88,7 @@ def test_first_step_by_hand():
 def test_bit_identical_to_wiki_loop(start, p0):
     ref = wiki_loop(2000, start, p0)
     cfg = config.override(CFG, "ball", pos=start, p=p0)
-    s = cfg.system()
+    s = build.system(cfg)
     got = np.empty_like(ref)
     for n in range(len(ref)):
         physics.step(s)
@@ -103,7 +104,7 @@ def crossings(t, y, level):
 
 
 def test_period_matches_closed_form():
-    traj = physics.run(CFG.system(), 2000)            # 20 s, about 39 periods
+    traj = physics.run(build.system(CFG), 2000)            # 20 s, about 39 periods
     eq = -(L0 + M * G / K)
     tc = crossings(traj.t, traj.pos[:, 1], eq)
     period = (tc[-1] - tc[0]) / (len(tc) - 1)
@@ -112,11 +113,11 @@ def test_period_matches_closed_form():
 
 def test_equilibrium_stretch_is_mg_over_k():
     eq = -(L0 + M * G / K)
-    s = config.override(CFG, "ball", pos=(0, eq, 0)).system()
+    s = build.system(config.override(CFG, "ball", pos=(0, eq, 0)))
     physics.step(s, 1000)
     assert s.pos[1, 1] == pytest.approx(eq, abs=1e-12)
     # and an oscillation is centred on it
-    traj = physics.run(CFG.system(), 1000)
+    traj = physics.run(build.system(CFG), 1000)
     assert traj.pos[:, 1].mean() == pytest.approx(eq, abs=2e-4)
     assert (-traj.pos[:, 1] - L0).mean() == pytest.approx(0.0653, abs=5e-4)
 
@@ -124,7 +125,7 @@ def test_equilibrium_stretch_is_mg_over_k():
 def test_energy_bounded_over_100_periods():
     T = 2 * math.pi * math.sqrt(M / K)
     per = int(round(T / DT))
-    traj = physics.run(CFG.system(), 100 * per)
+    traj = physics.run(build.system(CFG), 100 * per)
     E = traj.E
     osc = 0.5 * K * 0.02 ** 2                             # energy of the oscillation
     first, last = E[:per], E[-per:]
@@ -133,7 +134,7 @@ def test_energy_bounded_over_100_periods():
 
 
 def test_energy_terms():
-    s = CFG.system()
+    s = build.system(CFG)
     e = physics.energies(s)
     y = s.pos[1, 1]
     assert e.K == 0

@@ -11,16 +11,17 @@ import pytest
 
 from conftest import BASELINES, WIKI, require_backend, run_cli
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, check, compare
-from springscene import config, physics
+from springscene import build, config, render
+from springscene.model import physics
 
 TIMES = (0.0, 0.13, 0.25, 0.38)   # bottom, middle, top, middle of the first period
 
 
 @pytest.fixture(scope="module")
 def scene(wiki_cfg):
-    from springscene.scene import Scene
+    from springscene.view.scene import Scene
 
-    sc = Scene(wiki_cfg, wiki_cfg.system())
+    sc = render.make_scene(wiki_cfg, build.system(wiki_cfg))
     yield sc
     sc.close()
 
@@ -35,7 +36,7 @@ def ball_centroid(img):
 
 @pytest.mark.parametrize("y", [-0.06, -0.185, -0.24], ids=["compressed", "hanging", "stretched"])
 def test_spring_mesh_spans_holder_to_ball_centre(scene, wiki_cfg, y):
-    s = config.override(wiki_cfg, "ball", pos=(0.01, y, 0.0)).system()
+    s = build.system(config.override(wiki_cfg, "ball", pos=(0.01, y, 0.0)))
     meshes_before = list(scene.spring_meshes)
     n_actors = len(scene.plotter.renderer.actors)
     scene.update(s)
@@ -52,7 +53,7 @@ def test_spring_mesh_spans_holder_to_ball_centre(scene, wiki_cfg, y):
 
 
 def test_ball_pixel_follows_world_position(scene, wiki_cfg):
-    s = wiki_cfg.system()
+    s = build.system(wiki_cfg)
     seen = []
     for t in TIMES:
         physics.step(s, int(round(t / s.dt)) - s.steps)
@@ -79,11 +80,11 @@ def test_still_matches_baseline(tmp_path, backend_name, t, regen):
 
 def test_baseline_tolerance_catches_a_ball_moved_one_pixel(wiki_cfg):
     """The stated tolerance is tight enough: the ball 1 px lower fails it."""
-    from springscene.scene import Scene
+    from springscene.view.scene import Scene
 
     base = iio.imread(BASELINES / "wiki_t0.00.png")
-    s = wiki_cfg.system()
-    with Scene(wiki_cfg, s) as scene:    # its own scene: autoscale starts afresh
+    s = build.system(wiki_cfg)
+    with render.make_scene(wiki_cfg, s) as scene:    # its own scene: autoscale starts afresh
         same = scene.frame()
         px = 2 * scene.view.position[2] * math.tan(scene.view.fov / 2) / wiki_cfg.scene.height
         s.pos[1, 1] -= px                  # one pixel's worth of world at the ball's depth
@@ -95,10 +96,10 @@ def test_baseline_tolerance_catches_a_ball_moved_one_pixel(wiki_cfg):
 
 
 def test_title_contrasts_with_background(wiki_cfg):
-    from springscene.scene import Scene
+    from springscene.view.scene import Scene
 
     dark = config.from_dict({"scene": {"background": "black"}})
-    with Scene(dark, dark.system()) as sc:
+    with render.make_scene(dark, build.system(dark)) as sc:
         top = sc.frame()[:30]
     assert top.max() > 200                 # white letters on black
 
@@ -119,7 +120,7 @@ def test_simulate_csv(tmp_path, wiki_cfg):
     assert rows[0] == ["t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E", "E_thermal"]
     data = np.array(rows[1:], dtype=float)
     assert len(data) == 101 and data[0, 0] == 0 and data[-1, 0] == pytest.approx(1.0)
-    ref = physics.run(wiki_cfg.system(), 100)
+    ref = physics.run(build.system(wiki_cfg), 100)
     assert np.array_equal(data[:, 2], ref.pos[:, 1])          # full precision round trip
     assert np.allclose(data[:, 10], data[:, 7] + data[:, 8] + data[:, 9])
     m = wiki_cfg.ball.m
@@ -192,12 +193,12 @@ def test_frame_times_are_whole_steps_in_real_time():
 
 def test_driven_holder_moves_with_its_support():
     """A driven support's box follows the support node; the spring still starts there."""
-    from springscene.scene import Scene
+    from springscene.view.scene import Scene
 
     cfg = config.override(config.load(WIKI.parent / "driven.toml"), "drive", amplitude=0.03,
                           omega=3.0)
-    s = cfg.system()
-    with Scene(cfg, s, antialias=False) as sc:
+    s = build.system(cfg)
+    with render.make_scene(cfg, s, antialias=False) as sc:
         physics.step(s, 52)
         sc.update(s)
         holder = sc.plotter.renderer.actors

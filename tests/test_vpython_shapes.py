@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from springscene.geometry import HelixFrame
+from springscene.view.geometry import HelixFrame
 from springscene.vpython import shapes
 
 UNIT_KINDS = {            # kind: (template, points, triangles, centred)

@@ -9,7 +9,8 @@ import time
 import numpy as np
 import pytest
 
-from springscene import config, physics
+from springscene import build, config
+from springscene.model import physics
 from test_physics import wiki_loop
 from springscene.vpython import vmath
 import importlib
@@ -424,7 +425,7 @@ CFG = config.load("configs/wiki.toml")
 ])
 def test_wiki_loop_bit_identical_to_physics_engine(start, p0):
     ref = wiki_loop(2000, start, p0, vector, mag, norm)     # the page's loop, our vectors
-    s = config.override(CFG, "ball", pos=start, p=p0).system()
+    s = build.system(config.override(CFG, "ball", pos=start, p=p0))
     got = np.empty_like(ref)
     for n in range(len(ref)):
         physics.step(s)

@@ -20,9 +20,9 @@ from collections import defaultdict
 
 import numpy as np
 
-from .. import backend, camera
-from ..geometry import HelixTube
-from ..scene import (MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, apply_view, grab,
+from ..view import backend, camera
+from ..view.geometry import HelixTube
+from ..view.scene import (MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, apply_view, grab,
                      title_color)
 from . import shapes
 

@@ -44,7 +44,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from springscene.geometry import TUBE_SIDES
+from ..view.geometry import TUBE_SIDES
 
 SPHERE_SLICES = 30      # our scene's ball (GlowScript: makeSphere(0.5, 30))
 CYLINDER_SIDES = 50     # mesh.js makeCylinder: N = 50

@@ -12,7 +12,7 @@ import ctypes
 import ctypes.util
 import os
 
-from .errors import UserError
+from ..errors import UserError
 
 BACKENDS = ("auto", "egl", "osmesa")
 

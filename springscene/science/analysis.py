@@ -23,9 +23,12 @@ from dataclasses import replace
 
 import numpy as np
 
-from . import config, physics, render, theory
-from .config import Config
-from .errors import UserError
+from .. import build, config
+from ..model import physics, timeline
+from . import theory
+from .sweep import check_sweepable
+from ..settings import Config
+from ..errors import UserError
 
 MIN_STEPS_PER_PERIOD = 12
 KEYS = ("period", "frequency", "angular_frequency", "equilibrium_stretch", "amplitude",
@@ -80,8 +83,6 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     cfg = config.override(cfg, "render", duration=duration)
     osc = theory.Oscillator.from_config(cfg)
     if cfg.driven:
-        from .sweep import check_sweepable
-
         check_sweepable(cfg, "analyze")
     if osc.omega_d > 0 and osc.period / cfg.physics.dt < MIN_STEPS_PER_PERIOD:
         raise UserError(f"{cfg.source}: dt = {cfg.physics.dt:g} s (--dt or [physics] dt) gives {osc.period / cfg.physics.dt:.3g} steps "
@@ -92,7 +93,8 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
         where = "--duration" if duration is not None else f"{cfg.source}: [render] duration"
         raise UserError(f"{where} {cfg.render.duration:g} s is too short to analyze: it needs "
                         f"at least {need:.3g} s ({_why_needed(cfg, osc)})")
-    traj = render.simulate(cfg)
+    traj = physics.run(build.system(cfg), timeline.step_at(cfg.render.duration, cfg.physics.dt,
+                                                              "--duration"))
     axis = np.asarray(osc.axis)
     m = cfg.ball.m
     driven = cfg.driven
@@ -121,7 +123,7 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     T = period_from_crossings(t[sel], x[sel])
 
     # energy about equilibrium: the engine's own energies, minus those at rest at equilibrium
-    rest = cfg.system()
+    rest = build.system(cfg)
     rest.pos[1] = np.asarray(cfg.holder.pos) + axis * (y_eq - holder_y)
     rest.p[:] = 0.0
     rest.L0[:] = traj.L0[-1]

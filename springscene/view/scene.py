@@ -1,7 +1,8 @@
 """The 3D scene, drawn as VPython draws it: holder boxes, helix springs and ball spheres.
 
-A :class:`Scene` is built once from a config and mirrors a physics
-:class:`~springscene.physics.System`: each fixed node is a holder box, each free
+A :class:`Scene` is built once from the settings it draws with (the canvas, the
+camera, the holder, spring and ball sections of a config) and mirrors a physics
+:class:`~springscene.model.physics.System`: each fixed node is a holder box, each free
 node a ball, each spring a helix from its start node to its end node. Each frame,
 :meth:`Scene.update` moves the balls' actors and rewrites the springs' points in
 place; no mesh is rebuilt and no actor is added. The scene only reads the state.
@@ -13,10 +14,10 @@ import math
 
 import numpy as np
 
+from ..model.physics import System
+from ..settings import BallCfg, CameraCfg, HolderCfg, SceneCfg, SpringCfg
 from . import backend, camera
-from .config import Config
 from .geometry import HelixFrame, HelixTube
-from .physics import System
 
 # VPython's lights: fixed in the world, (direction towards the light, colour).
 LIGHTS = (((0.22, 0.44, 0.88), 0.8), ((-0.88, -0.22, -0.44), 0.3))
@@ -45,7 +46,7 @@ def grab(render_window, width: int, height: int, buffer) -> np.ndarray:
 
     ``buffer`` is a ``vtkUnsignedCharArray`` reused from frame to frame.
     """
-    from vtkmodules.util.numpy_support import vtk_to_numpy
+    from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
 
     render_window.Render()
     render_window.GetPixelData(0, 0, width - 1, height - 1, 0, buffer, 0)
@@ -70,18 +71,18 @@ def title_color(background) -> str:
     return "black" if luminance > 0.5 else "white"
 
 
-def new_plotter(cfg: Config, antialias: bool = True):
-    """An off-screen plotter of the config's size and background, lit by VPython's :data:`LIGHTS`.
+def new_plotter(canvas: SceneCfg, antialias: bool = True):
+    """An off-screen plotter of the canvas's size and background, lit by VPython's :data:`LIGHTS`.
 
     4x multisampling when ``antialias``. The backend must have been chosen
-    (:func:`springscene.backend.select`).
+    (:func:`springscene.view.backend.select`).
     """
-    import pyvista as pv
+    import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
 
-    w, h = cfg.scene.width, cfg.scene.height
+    w, h = canvas.width, canvas.height
     pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
     pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
-    pl.set_background(cfg.scene.background)
+    pl.set_background(canvas.background)
     for direction, intensity in LIGHTS:
         light = pv.Light(position=direction, focal_point=(0, 0, 0),
                          color=(intensity,) * 3, light_type="scene light")
@@ -90,11 +91,11 @@ def new_plotter(cfg: Config, antialias: bool = True):
     return pl
 
 
-def add_title(plotter, cfg: Config) -> None:
-    """The config's title centred along the top edge (no text when it is blank)."""
-    if cfg.scene.title.strip():
-        plotter.add_text(cfg.scene.title.strip(), position="upper_edge",
-                         font_size=TITLE_FONT_SIZE, color=title_color(cfg.scene.background),
+def add_title(plotter, canvas: SceneCfg) -> None:
+    """The canvas's title centred along the top edge (no text when it is blank)."""
+    if canvas.title.strip():
+        plotter.add_text(canvas.title.strip(), position="upper_edge",
+                         font_size=TITLE_FONT_SIZE, color=title_color(canvas.background),
                          name="title")
 
 
@@ -103,17 +104,19 @@ class SceneBase:
     the read-back, the clock. A subclass draws its objects, calls :meth:`_open` first and
     :meth:`_place_camera` from its ``update``, and gives :meth:`object_bounds`."""
 
-    cfg: Config
+    canvas: SceneCfg
+    camera: CameraCfg
     plotter = None
     view: camera.View | None = None
     _range: float | None = None
     _pixels = None
 
-    def _open(self, cfg: Config, antialias: bool, backend_name: str):
+    def _open(self, canvas: SceneCfg, camera_cfg: CameraCfg, antialias: bool,
+              backend_name: str):
         """Choose the backend and make the plotter; returns it."""
         backend.select(backend_name)
-        self.cfg = cfg
-        self.plotter = new_plotter(cfg, antialias)
+        self.canvas, self.camera = canvas, camera_cfg
+        self.plotter = new_plotter(canvas, antialias)
         self._autoscale = camera.Autoscaler()
         self.view = None
         self._range = None
@@ -127,11 +130,11 @@ class SceneBase:
     def autoscale_bounds(self, system: System) -> tuple[np.ndarray, np.ndarray]:
         """What VPython's autoscale measures: the objects' bounds and the point they are
         measured from (the world axes and ``[camera] center``, as VPython)."""
-        return self.object_bounds(system), np.asarray(self.cfg.camera.center, dtype=float)
+        return self.object_bounds(system), np.asarray(self.camera.center, dtype=float)
 
     def _place_camera(self, system: System) -> None:
-        c = self.cfg.camera
-        w, h = self.cfg.scene.width, self.cfg.scene.height
+        c = self.camera
+        w, h = self.canvas.width, self.canvas.height
         rng = c.range
         if rng is None:
             bounds, center = self.autoscale_bounds(system)
@@ -145,9 +148,10 @@ class SceneBase:
     def frame(self) -> np.ndarray:
         """Render and read back the frame as an (height, width, 3) uint8 array, top row first."""
         if self._pixels is None:
-            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: VTK
+
             self._pixels = vtkUnsignedCharArray()
-        return grab(self.plotter.ren_win, self.cfg.scene.width, self.cfg.scene.height,
+        return grab(self.plotter.ren_win, self.canvas.width, self.canvas.height,
                     self._pixels)
 
     _clock = None            # the clock's text actor, added by the first set_clock()
@@ -161,17 +165,17 @@ class SceneBase:
         on a dark one, as the title); later calls only change its text.
         """
         if self._clock is None:
-            from vtkmodules.vtkRenderingCore import vtkTextActor
+            from vtkmodules.vtkRenderingCore import vtkTextActor  # noqa: PLC0415  heavy: VTK
 
             actor = vtkTextActor()
             prop = actor.GetTextProperty()
             prop.SetFontFamilyToArial()
             prop.SetFontSize(self.CLOCK_FONT_SIZE)
-            dark = title_color(self.cfg.scene.background) == "black"
+            dark = title_color(self.canvas.background) == "black"
             prop.SetColor((0.0,) * 3 if dark else (1.0,) * 3)
             prop.SetJustificationToLeft()
             prop.SetVerticalJustificationToTop()
-            actor.SetPosition(self.CLOCK_MARGIN, self.cfg.scene.height - self.CLOCK_MARGIN)
+            actor.SetPosition(self.CLOCK_MARGIN, self.canvas.height - self.CLOCK_MARGIN)
             self.plotter.renderer.AddViewProp(actor)
             self._clock = actor
         self._clock.SetInput(str(text))
@@ -187,51 +191,54 @@ class SceneBase:
 
 
 class Scene(SceneBase):
-    """An off-screen scene for a config, following a :class:`System` frame by frame.
+    """An off-screen scene of holders, springs and balls, following a :class:`System` frame by frame.
 
     Parameters
     ----------
-    cfg : Config
-        Scene, camera and object settings.
     system : System
-        The state the scene starts from (node 0 the holder, node 1 the ball).
+        The state the scene starts from (its fixed nodes are holders, its free nodes balls).
+    canvas, camera, holder, spring, ball : SceneCfg, CameraCfg, HolderCfg, SpringCfg, BallCfg
+        What to draw with: a config's sections of those names.
     antialias : bool
         4x multisampling when True; off for draft renders.
     backend_name : str
         "auto", "egl" or "osmesa".
     """
 
-    def __init__(self, cfg: Config, system: System, antialias: bool = True,
+    def __init__(self, system: System, *, canvas: SceneCfg, camera: CameraCfg,
+                 holder: HolderCfg, spring: SpringCfg, ball: BallCfg, antialias: bool = True,
                  backend_name: str = "auto") -> None:
-        pl = self._open(cfg, antialias, backend_name)
-        import pyvista as pv     # after the backend is chosen
+        pl = self._open(canvas, camera, antialias, backend_name)
+        import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
+
+        self.ball_radius = ball.radius
 
         # holders: boxes centred on the fixed nodes
         self._holder_bounds = []
         self._holders = []          # (node, actor, rest position): driven supports move
         for node in np.flatnonzero(system.fixed):
             c = system.pos[node]
-            half = np.asarray(cfg.holder.size) / 2
+            half = np.asarray(holder.size) / 2
             box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
             actor = pl.add_mesh(box, smooth_shading=False)
-            _material(actor, cfg.holder.color)
+            _material(actor, holder.color)
             actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
             self._holder_bounds.append(np.stack([c - half, c + half]))
             self._holders.append((int(node), actor, c.copy()))
 
         # balls: one sphere mesh, moved by its actor's position
         self._balls = []
-        r = cfg.ball.radius
+        r = ball.radius
         for node in system.free:
             sphere = pv.Sphere(radius=r, center=(0, 0, 0), theta_resolution=SPHERE_SLICES,
                                phi_resolution=SPHERE_SLICES)
             actor = pl.add_mesh(sphere, smooth_shading=True)
-            _material(actor, cfg.ball.color)
+            _material(actor, ball.color)
             self._balls.append((int(node), actor))
 
         # springs: tube meshes whose points are rewritten in place
         self._springs = []
-        sc = cfg.spring
+        sc = spring
         for i, j in zip(system.i, system.j):
             tube = HelixTube(sc.radius, sc.thickness, sc.coils)
             frame = HelixFrame()
@@ -245,7 +252,7 @@ class Scene(SceneBase):
             _material(actor, sc.color)
             self._springs.append((int(i), int(j), tube, frame, mesh, actor))
 
-        add_title(pl, cfg)
+        add_title(pl, canvas)
         self.update(system)
 
     # -- per frame ---------------------------------------------------------------------
@@ -268,7 +275,7 @@ class Scene(SceneBase):
 
     def object_bounds(self, system: System) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
-        r = self.cfg.ball.radius
+        r = self.ball_radius
         b = [bounds + (system.pos[node] - rest)
              for bounds, (node, _, rest) in zip(self._holder_bounds, self._holders)]
         b += [np.stack([system.pos[n] - r, system.pos[n] + r]) for n, _ in self._balls]

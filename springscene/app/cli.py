@@ -11,11 +11,13 @@ import json
 import sys
 import warnings
 
-from springscene import config
-from springscene.backend import BACKENDS
-from springscene.errors import ProgramError, UserError
-from springscene.integrators import NAMES
-from springscene.overlay import OVERLAYS, parse_overlays
+from .. import config, jobs
+from ..errors import ProgramError, UserError
+from ..model.integrators import NAMES
+from ..science.sweep import parse_omega, summary
+from ..view.backend import BACKENDS
+from ..view.info import info
+from ..view.overlay import OVERLAYS, parse_overlays
 
 EXIT_BAD_INPUT = 2
 EXIT_PROGRAM_ERROR = 1     # the user's VPython program raised
@@ -111,85 +113,71 @@ def _build_parser() -> argparse.ArgumentParser:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from springscene import render
-    from springscene.outputs import check_output
-
     if args.command == "info":
-        from springscene.info import info
-
         for key, value in info(args.backend).items():
             print(f"{key}: {value}")
         return 0
-
     if args.command == "vpython":
         return _vpython(args)
-
     cfg = config.load(args.config)
     if hasattr(args, "dt"):
         cfg = config.override(cfg, "physics", integrator=args.integrator, dt=args.dt)
-    if args.command == "simulate":
-        out = check_output(args.out, (".csv",))
-        render.write_csv(render.simulate(cfg, args.duration), out)
-        print(f"wrote {out}")
-    elif args.command == "analyze" and cfg.is_lattice:
-        from springscene import matter
+    return _COMMANDS[args.command](cfg, args)
 
-        result = matter.analyze(cfg, args.duration)
-        print(json.dumps(result, indent=2) if args.json else matter.table(result))
-    elif args.command == "analyze":
-        from springscene import analysis
 
-        result = analysis.analyze(cfg, args.duration)
-        if args.json:
-            print(json.dumps({"measured": result["measured"], "theory": result["theory"],
-                              "regime": result["regime"], "integrator": result["integrator"],
-                              "dt": result["dt"], "duration": result["duration"]}, indent=2))
-        else:
-            print(analysis.table(result))
-    elif args.command == "sweep":
-        from springscene import sweep
-
-        omega = sweep.parse_omega(args.omega)
-        out = check_output(args.out, (".csv",)) if args.out is not None else None
-        result = sweep.sweep(cfg, omega, periods=args.periods)
-        print(sweep.summary(result))
-        if out is not None:
-            sweep.write_csv(result, out)
-            print(f"wrote {out}")
-    elif args.command == "figures" and cfg.is_lattice:
-        from springscene import matter
-
-        for path in matter.make_figures(cfg, args.out):
-            print(f"wrote {path}")
-    elif args.command == "figures":
-        from springscene import figures
-
-        for path in figures.make_figures(cfg, args.out, backend=args.backend,
-                                         antialias=not args.draft):
-            print(f"wrote {path}")
-    elif args.command == "still":
-        render.still(cfg, args.time, args.out, backend=args.backend, antialias=not args.draft)
-        print(f"wrote {args.out}")
-    elif args.command == "render":
-        stats = render.render_video(cfg, args.out, duration=args.duration, fps=args.fps,
-                                    speed=args.speed, backend=args.backend, antialias=not args.draft,
-                                    overlays=parse_overlays(args.overlay),
-                                    progress=not args.quiet and sys.stderr.isatty())
-        if not args.quiet:
-            print(f"wrote {stats.path}: {stats.frames} frames at {stats.fps} fps "
-                  f"in {stats.seconds:.1f} s ({stats.frames_per_second:.1f} frames/s)")
+def _simulate(cfg: config.Config, args: argparse.Namespace) -> int:
+    jobs.simulate(cfg, args.duration, args.out)
+    print(f"wrote {args.out}")
     return 0
 
 
-def _vpython(args: argparse.Namespace) -> int:
-    from springscene.vpython.runner import run_program
+def _analyze(cfg: config.Config, args: argparse.Namespace) -> int:
+    print(jobs.report(cfg, jobs.analyze(cfg, args.duration), as_json=args.json))
+    return 0
 
+
+def _sweep(cfg: config.Config, args: argparse.Namespace) -> int:
+    result = jobs.sweep(cfg, parse_omega(args.omega), periods=args.periods, out=args.out)
+    print(summary(result))
+    if args.out is not None:
+        print(f"wrote {args.out}")
+    return 0
+
+
+def _figures(cfg: config.Config, args: argparse.Namespace) -> int:
+    for path in jobs.figures(cfg, args.out, backend=args.backend, antialias=not args.draft):
+        print(f"wrote {path}")
+    return 0
+
+
+def _still(cfg: config.Config, args: argparse.Namespace) -> int:
+    jobs.still(cfg, args.time, args.out, backend=args.backend, antialias=not args.draft)
+    print(f"wrote {args.out}")
+    return 0
+
+
+def _render(cfg: config.Config, args: argparse.Namespace) -> int:
+    stats = jobs.render(cfg, args.out, duration=args.duration, fps=args.fps, speed=args.speed,
+                        backend=args.backend, antialias=not args.draft,
+                        overlays=parse_overlays(args.overlay),
+                        progress=not args.quiet and sys.stderr.isatty())
+    if not args.quiet:
+        print(f"wrote {stats.path}: {stats.frames} frames at {stats.fps} fps "
+              f"in {stats.seconds:.1f} s ({stats.frames_per_second:.1f} frames/s)")
+    return 0
+
+
+_COMMANDS = {"simulate": _simulate, "analyze": _analyze, "sweep": _sweep, "figures": _figures,
+             "still": _still, "render": _render}
+
+
+def _vpython(args: argparse.Namespace) -> int:
     overlays = tuple(name.strip() for name in args.overlay.split(",") if name.strip())
     if args.overlay.strip() and not overlays:
         raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
-    result = run_program(args.program, args.out, duration=args.duration, frames=args.frames,
-                         fps=args.fps, backend=args.backend, antialias=not args.draft,
-                         overlays=overlays, page=not args.no_page)
+    result = jobs.vpython(args.program, args.out, duration=args.duration, frames=args.frames,
+                          fps=args.fps, backend=args.backend, antialias=not args.draft,
+                          overlays=overlays, page=not args.no_page)
     for note in result.notes:
         print(f"springscene: note: {note}", file=sys.stderr)
     if not args.quiet:

@@ -21,7 +21,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .errors import UserError
+from ..errors import UserError
+from ..model import physics
+from ..settings import SceneCfg
+from .plotstyle import agg_figure, panel_style
 
 OVERLAYS = ("time", "graph", "energy")
 
@@ -86,13 +89,9 @@ class _Panel:
     """A matplotlib figure of ``width`` x ``height`` pixels drawn with Agg and blitting."""
 
     def __init__(self, width: int, height: int) -> None:
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-
         self.width, self.height = int(width), int(height)
-        self.fig = Figure(figsize=(self.width / DPI, self.height / DPI), dpi=DPI,
-                          facecolor="white")
-        self.canvas = FigureCanvasAgg(self.fig)
+        self.fig = agg_figure(self.width, self.height, DPI, facecolor="white")
+        self.canvas = self.fig.canvas
         self._background = None
         self.static: np.ndarray | None = None            # (h, w, 3) the panel, frozen
         self.region: tuple[slice, slice] = (slice(0), slice(0))   # rows, cols that move
@@ -101,7 +100,7 @@ class _Panel:
         """Lay the figure out once, draw its static parts (the animated artists left out)
         and keep them: the whole panel as :attr:`static`, and the pixels of ``ax`` (``pad``
         px wider) as the background every frame restores before drawing the moving parts."""
-        from matplotlib.transforms import Bbox
+        from matplotlib.transforms import Bbox  # noqa: PLC0415  heavy: matplotlib
 
         for artist in ax.get_children():       # lay out by the static parts only
             if artist.get_animated():
@@ -145,11 +144,9 @@ class GraphPanel(_Panel):
     """
 
     def __init__(self, width: int, traj, duration: float, height: int = GRAPH_HEIGHT) -> None:
-        from matplotlib import rc_context, style
-
         super().__init__(width, height)
         t, y = np.asarray(traj.t), np.asarray(traj.pos[:, 1])
-        with style.context("default"), rc_context({"font.size": FONT_SIZE}):
+        with panel_style(FONT_SIZE):
             ax = self.fig.add_subplot()
             ax.set_xlim(0.0, max(float(duration), float(t[-1]), 1e-9))
             ax.set_ylim(*_limits(y))
@@ -187,11 +184,10 @@ class EnergyPanel(_Panel):
     """
 
     def __init__(self, height: int, traj, width: int = ENERGY_WIDTH) -> None:
-        from matplotlib import rc_context, style
-        from matplotlib.collections import PolyCollection
+        from matplotlib.collections import PolyCollection  # noqa: PLC0415  heavy: matplotlib
 
         super().__init__(width, height)
-        with style.context("default"), rc_context({"font.size": FONT_SIZE}):
+        with panel_style(FONT_SIZE):
             ax = self.fig.add_subplot()
             x = np.arange(len(ENERGY_BARS))
             labels = [label for label, _ in ENERGY_BARS]
@@ -233,14 +229,18 @@ class Overlays:
 
     Parameters
     ----------
-    cfg : Config
-        The render's config (scene size, render duration).
+    canvas : SceneCfg
+        The scene's canvas (its size and background).
     overlays : tuple of str
         Names from :data:`OVERLAYS`; empty for the plain scene.
     trajectory : Trajectory, optional
-        A pre-run of the same config from t = 0, at least to the last frame (it fixes
-        the graph's and the bars' axes and is the graph's trace). Computed from
-        ``cfg`` when needed and not given.
+        A pre-run of the same system from t = 0, at least to the last frame (it fixes
+        the graph's and the bars' axes and is the graph's trace); needed by the graph
+        and the energy bars.
+    duration : float
+        The video's simulated seconds (the graph's time axis).
+    speed : float
+        Simulated seconds per video second (the clock's unit).
 
     Use per frame, after the system is stepped and the scene updated::
 
@@ -248,28 +248,22 @@ class Overlays:
         frame = overlays.compose(scene.frame(), system)
     """
 
-    def __init__(self, cfg, overlays: tuple[str, ...] = (), trajectory=None) -> None:
+    def __init__(self, canvas: SceneCfg, overlays: tuple[str, ...] = (), trajectory=None, *,
+                 duration: float = 0.0, speed: float = 1.0) -> None:
         overlays = tuple(overlays)
         for name in overlays:
             if name not in OVERLAYS:
                 raise ValueError(f"unknown overlay {name!r} (use {', '.join(OVERLAYS)})")
+        if ("graph" in overlays or "energy" in overlays) and trajectory is None:
+            raise ValueError("the graph and energy overlays need the run's trajectory")
         self.names = overlays
-        self.cfg = cfg
-        if cfg.is_lattice and ("graph" in overlays or "energy" in overlays):
-            raise UserError("--overlay: graph and energy follow the page's single ball; "
-                            "a [lattice] config takes only time")
-        self.scene_size = (cfg.scene.width, cfg.scene.height)
+        self.speed = speed
+        self.scene_size = (canvas.width, canvas.height)
         w, h = self.scene_size
         self.graph = self.energy = None
-        if ("graph" in overlays or "energy" in overlays) and trajectory is None:
-            from . import physics
-            from .render import step_at
-
-            trajectory = physics.run(cfg.system(), step_at(cfg.render.duration, cfg.physics.dt,
-                                                           "--duration"))
         left = w
         if "graph" in overlays:
-            self.graph = GraphPanel(max(w, GRAPH_MIN_WIDTH), trajectory, cfg.render.duration)
+            self.graph = GraphPanel(max(w, GRAPH_MIN_WIDTH), trajectory, duration)
             left = self.graph.width
         height = h + (self.graph.height if self.graph is not None else 0)
         if "energy" in overlays:
@@ -283,7 +277,7 @@ class Overlays:
             frame = np.empty((height, self.size[0], 3), np.uint8)
             frame[...] = PANEL_BACKGROUND
             if left > w:           # a scene narrower than its graph: pad with its background
-                frame[:h, w:left] = np.rint(np.asarray(cfg.scene.background) * 255)
+                frame[:h, w:left] = np.rint(np.asarray(canvas.background) * 255)
             self._graph_at = self._energy_at = None
             if self.graph is not None:
                 frame[h:h + self.graph.height, :self.graph.width] = self.graph.static
@@ -308,7 +302,7 @@ class Overlays:
     def update_scene(self, scene, system) -> None:
         """Set the scene's clock to the system's time (before the scene is rendered)."""
         if "time" in self.names:
-            scene.set_clock(clock_text(system.t, self.cfg.render.speed))
+            scene.set_clock(clock_text(system.t, self.speed))
 
     def compose(self, scene_image: np.ndarray, system) -> np.ndarray:
         """The video frame: ``scene_image`` (h, w, 3) with the panels at ``system``'s state.
@@ -325,7 +319,5 @@ class Overlays:
             node = int(system.free[0])
             _rgb_into(self._graph_at, self.graph.draw(system.t, float(system.pos[node, 1])))
         if self.energy is not None:
-            from . import physics
-
             _rgb_into(self._energy_at, self.energy.draw(physics.energies(system)))
         return frame

@@ -50,7 +50,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from . import integrators
-from .errors import UserError
+from ..errors import UserError
 
 DRIVE_KINDS = ("support", "force")
 

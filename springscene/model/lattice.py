@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import physics
-from .config import AVOGADRO, BOLTZMANN, Config
+from .constants import AVOGADRO, BOLTZMANN
 
 HELIX_MAX_BONDS = 300     # style "auto": helices up to this many bonds, cylinders beyond
 
@@ -79,13 +79,6 @@ class Lattice:
     m: float
     k: float
     fixed: str
-
-    @classmethod
-    def from_config(cls, cfg: Config) -> "Lattice":
-        lat, atom = cfg.lattice, cfg.atom
-        m = atom.m if atom.m is not None else atomic_mass(atom.molar_mass)
-        d = lat.spacing if lat.spacing is not None else spacing_from_density(m, lat.density)
-        return cls(tuple(lat.shape), d, m, cfg.bond.k, lat.fixed)
 
     @property
     def n_atoms(self) -> int:
@@ -147,28 +140,28 @@ def thermal_momenta(m: float, temperature: float, free: np.ndarray, seed: int,
     return p * math.sqrt(target / K) if K > 0 else p
 
 
-def build(cfg: Config) -> physics.System:
-    """The physics system of a lattice config (grid nodes, bonds, start, pull)."""
-    lat = Lattice.from_config(cfg)
+def build(lat: Lattice, *, kick=(0.0, 0.0, 0.0), temperature: float = 0.0, seed: int = 0,
+          pull: float = 0.0, g=(0.0, 0.0, 0.0), dt: float, b: float = 0.0,
+          integrator: str = "euler-cromer") -> physics.System:
+    """The physics system of a lattice: grid nodes and bonds; atoms at rest on their sites
+    except for a ``kick`` (m/s) to the first free layer or thermal momenta at
+    ``temperature`` (K, from ``seed``); a ``pull`` (N, along +x) shared by the last face."""
     pos = lat.sites()
     n = len(pos)
     held = lat.held()
     free = np.flatnonzero(~held)
     p = np.zeros((n, 3))
-    st = cfg.start
-    if st.temperature > 0:
-        p[free] = thermal_momenta(lat.m, st.temperature, free, st.seed,
-                                  zero_total=not held.any())
-    if any(st.kick):
-        p[first_free_layer(lat.shape, held)] += lat.m * np.asarray(st.kick, float)
+    if temperature > 0:
+        p[free] = thermal_momenta(lat.m, temperature, free, seed, zero_total=not held.any())
+    if any(kick):
+        p[first_free_layer(lat.shape, held)] += lat.m * np.asarray(kick, float)
     F_ext = None
-    if cfg.pull.force > 0:
+    if pull > 0:
         face = last_layer(lat.shape)
         F_ext = np.zeros((n, 3))
-        F_ext[face, 0] = cfg.pull.force / len(face)
+        F_ext[face, 0] = pull / len(face)
     i, j = physics.grid_bonds(lat.shape)
     return physics.System(
-        pos=pos, p=p, m=lat.m, fixed=held, i=i, j=j, k=lat.k, L0=lat.d,
-        g=cfg.physics.g, dt=cfg.physics.dt, b=cfg.damping.b, F_ext=F_ext,
-        integrator=cfg.physics.integrator, grid=lat.shape,
+        pos=pos, p=p, m=lat.m, fixed=held, i=i, j=j, k=lat.k, L0=lat.d, g=g, dt=dt, b=b,
+        F_ext=F_ext, integrator=integrator, grid=lat.shape,
     )

@@ -27,14 +27,12 @@ Nothing here knows about springs: :mod:`springscene.physics` supplies ``f``.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
 Force = Callable[[np.ndarray, float], np.ndarray]
-
-ORDER = {"euler": 1, "euler-cromer": 1, "verlet": 2, "rk4": 4}
-NAMES = tuple(ORDER)
 
 
 def _heat(Fd: np.ndarray, p0: np.ndarray, p1: np.ndarray, m, h: float) -> float:
@@ -94,7 +92,37 @@ def rk4(x, p, m, t, h, f: Force, beta=None):
     return x1, p1, (q1 + 2 * q2 + 2 * q3 + q4) * (h / 6)
 
 
-STEPPERS = {"euler": euler, "euler-cromer": euler_cromer, "verlet": verlet, "rk4": rk4}
+EULER_MAX_GROWTH_PER_PERIOD = 2.0
+
+
+@dataclass(frozen=True)
+class Integrator:
+    """Everything said about one integrator, in one place.
+
+    ``name`` is the config's and the flag's word; ``label`` the figures' and tables';
+    ``order`` its global order of accuracy; ``step`` the function; ``omega_dt_limit``
+    the largest omega*dt at which an undamped mode stays bounded (None: never, Euler
+    amplifies every mode); ``rule`` the words a refusal uses.
+    """
+
+    name: str
+    label: str
+    order: int
+    step: Callable
+    omega_dt_limit: float | None
+    rule: str
+
+
+INTEGRATORS: dict[str, Integrator] = {i.name: i for i in (
+    Integrator("euler", "Euler", 1, euler, None,
+               f"grows the amplitude more than {EULER_MAX_GROWTH_PER_PERIOD:g}x per period"),
+    Integrator("euler-cromer", "Euler-Cromer", 1, euler_cromer, 2.0, "needs omega*dt < 2"),
+    Integrator("verlet", "Verlet", 2, verlet, 2.0, "needs omega*dt < 2"),
+    Integrator("rk4", "RK4", 4, rk4, 2 * math.sqrt(2), "needs omega*dt < 2.83"),
+)}
+NAMES = tuple(INTEGRATORS)
+STEPPERS = {name: i.step for name, i in INTEGRATORS.items()}
+ORDER = {name: i.order for name, i in INTEGRATORS.items()}
 
 
 # ---- stability ----------------------------------------------------------------------------
@@ -123,9 +151,6 @@ def amplification(name: str, omega, gamma, h: float) -> np.ndarray:
 def growth(name: str, omega, gamma, h: float) -> np.ndarray:
     """Largest factor by which one step multiplies a linear mode (its spectral radius)."""
     return np.abs(np.linalg.eigvals(amplification(name, omega, gamma, h))).max(axis=-1)
-
-
-EULER_MAX_GROWTH_PER_PERIOD = 2.0
 
 
 def stable(name: str, omega, gamma, h: float) -> bool:
@@ -167,3 +192,17 @@ def suggest_step(h_max: float) -> float:
         if mant * 10.0 ** exp <= target:
             return mant * 10.0 ** exp
     return 10.0 ** (exp - 1)
+
+
+def stability_problem(name: str, omega, gamma, dt: float, what: str) -> str | None:
+    """Why ``dt`` would make integrator ``name`` blow up on modes (omega, gamma), with a
+    step that would not; None when it is stable. ``what`` names omega's bound."""
+    omega, gamma = np.unique(np.column_stack([np.ravel(omega), np.ravel(gamma)]), axis=0).T
+    if stable(name, omega, gamma, dt):
+        return None
+    w, gm = float(omega.max()), float(gamma.max())
+    h_max = largest_stable_step(name, omega, gamma, dt)
+    damped = f", b/2m = {gm:.3g} /s" if gm > 0 else ""
+    return (f"dt = {dt:g} s is unstable for {name} ({what} = {w:.4g} rad/s, "
+            f"omega*dt = {w * dt:.3g}{damped}; {name} {INTEGRATORS[name].rule}); "
+            f"use dt <= {suggest_step(h_max):g} s")

@@ -17,10 +17,12 @@ from pathlib import Path
 
 import numpy as np
 
-from . import config, physics, render, theory
-from .config import Config
-from .errors import UserError
-from .outputs import atomic_path, check_output
+from .. import build, config
+from ..model import physics, timeline
+from . import theory
+from ..settings import Config
+from ..errors import UserError
+from ..outputs import atomic_path, check_output
 
 MAX_FREQUENCIES = 100_000
 WINDOW_PERIODS = 10
@@ -106,14 +108,14 @@ def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
     slowest = 2 * math.pi / omega.min()
     window = WINDOW_PERIODS * slowest
     total = max(periods * slowest, -math.log(SETTLED) / osc.gamma + window)
-    n_total = render.step_at(total, dt, "--omega/--periods: the run of")
-    if n_total * len(omega) > 50 * render.MAX_STEPS:
+    n_total = timeline.step_at(total, dt, "--omega/--periods: the run of")
+    if n_total * len(omega) > 50 * timeline.MAX_STEPS:
         raise UserError(f"--omega/--periods: {len(omega)} frequencies x {n_total:,} steps is "
-                        f"more than {50 * render.MAX_STEPS:,} spring updates; use fewer")
+                        f"more than {50 * timeline.MAX_STEPS:,} spring updates; use fewer")
     n_window = max(int(round(window / dt)), 1)
 
     start = time.perf_counter()
-    s = cfg.system(omega=omega)
+    s = build.system(cfg, omega=omega)
     balls = s.free
     physics.step(s, n_total - n_window)
     y = s.pos[balls] @ axis

@@ -27,26 +27,29 @@ a :class:`matplotlib.figure.Figure`, so each can be tested on its own.
 
 from __future__ import annotations
 
-import contextlib
 import math
-import os
 from dataclasses import dataclass, field, replace
 from fractions import Fraction
+from importlib import resources
 from pathlib import Path
-from typing import Iterator
 
 import numpy as np
 
-from . import analysis, config, physics, render, sweep, theory
-from .config import Config
-from .errors import UserError
-from .outputs import atomic_path
+from .. import build, config
+from ..errors import UserError
+from .. import render
+from ..model import physics, timeline
+from ..model.integrators import INTEGRATORS
+from ..science import analysis, sweep, theory
+from ..settings import Config
+from ..view import backend as backends
+from ..view.plotstyle import (BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, SKY, VERMILLION,
+                              new_figure, style)
+from .files import prepare_out_dir, save_figure, write_text
 
-CONFIGS = Path(__file__).resolve().parent.parent / "configs"
-OVERSTRETCHED = CONFIGS / "overstretched.toml"
+# the config of the Hooke's-law figure when the user's spring has no elastic limit
+OVERSTRETCHED = "overstretched.toml"
 
-DPI = 100
-WIDTH_IN = 8.0                 # 800 px: the wiki page's width
 DEMO_B = 0.1                   # kg/s
 DEMO_DRIVE_AMPLITUDE = 0.002   # m, of the holder
 DEMO_K3 = 1000.0               # N/m^3, for the stiffening curve when the spring has none
@@ -56,110 +59,8 @@ FILMSTRIP_FRAMES = 6
 GIF_MAX_BYTES = 2_000_000
 # (width, height, fps, periods) tried in turn until the GIF fits GIF_MAX_BYTES
 GIF_ATTEMPTS = ((450, 300, 25, 2), (450, 300, 20, 1), (360, 240, 20, 1), (300, 200, 15, 1))
-INTEGRATORS = ("euler", "euler-cromer", "verlet", "rk4")
-INTEGRATOR_LABELS = {"euler": "Euler", "euler-cromer": "Euler-Cromer", "verlet": "Verlet",
-                     "rk4": "RK4"}
-
-# Okabe-Ito: distinguishable with the common colour-vision deficiencies
-BLUE, VERMILLION, GREEN, PURPLE = "#0072B2", "#D55E00", "#009E73", "#CC79A7"
-ORANGE, SKY, BLACK, GREY = "#E69F00", "#56B4E9", "#000000", "#777777"
 INTEGRATOR_COLORS = {"euler": VERMILLION, "euler-cromer": BLUE, "verlet": GREEN, "rk4": PURPLE}
 
-STYLE = {
-    "font.family": "DejaVu Sans",
-    "mathtext.fontset": "dejavusans",
-    "font.size": 12,
-    "axes.titlesize": 13,
-    "axes.labelsize": 12,
-    "xtick.labelsize": 11,
-    "ytick.labelsize": 11,
-    "legend.fontsize": 10.5,
-    "figure.titlesize": 14,
-    "axes.grid": True,
-    "grid.color": "#dddddd",
-    "grid.linewidth": 0.7,
-    "axes.spines.top": False,
-    "axes.spines.right": False,
-    "axes.formatter.use_mathtext": False,
-    "axes.formatter.useoffset": False,
-    "lines.linewidth": 1.6,
-    "legend.framealpha": 0.92,
-    "legend.edgecolor": "#cccccc",
-    "figure.facecolor": "white",
-    "axes.facecolor": "white",
-    "savefig.facecolor": "white",
-    "figure.dpi": DPI,
-    "savefig.dpi": DPI,
-    "figure.constrained_layout.use": True,
-    "svg.fonttype": "path",
-    "svg.hashsalt": "springscene",
-    "svg.image_inline": True,
-    "path.simplify": True,
-}
-PNG_METADATA = {"Software": None}
-SVG_METADATA = {"Date": None, "Creator": None}
-
-
-@contextlib.contextmanager
-def style() -> Iterator[None]:
-    """Matplotlib's defaults plus :data:`STYLE`, whatever the user's matplotlibrc says."""
-    import matplotlib
-
-    with matplotlib.rc_context():
-        matplotlib.rcdefaults()
-        matplotlib.rcParams.update(STYLE)
-        from cycler import cycler
-
-        matplotlib.rcParams["axes.prop_cycle"] = cycler(
-            color=[BLUE, VERMILLION, GREEN, PURPLE, ORANGE, SKY, BLACK])
-        yield
-
-
-def new_figure(height_px: int = 500, width_px: int = round(WIDTH_IN * DPI)):
-    """An Agg figure (no pyplot, no global state) of the given size in pixels."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-    from matplotlib.figure import Figure
-
-    fig = Figure(figsize=(width_px / DPI, height_px / DPI), dpi=DPI)
-    FigureCanvasAgg(fig)
-    return fig
-
-
-def figure_image(fig) -> np.ndarray:
-    """The figure as an (h, w, 3) uint8 array, exactly as the PNG has it."""
-    with style():
-        fig.canvas.draw()
-        return np.asarray(fig.canvas.buffer_rgba())[..., :3].copy()
-
-
-def save_figure(fig, out_dir: Path, stem: str, formats: tuple[str, ...] = ("png", "svg")
-                ) -> list[Path]:
-    """Write ``stem.png`` and ``stem.svg`` atomically, without dates (same bytes every run)."""
-    paths = []
-    with style():
-        for fmt in formats:
-            path = out_dir / f"{stem}.{fmt}"
-            metadata = PNG_METADATA if fmt == "png" else SVG_METADATA
-            with atomic_path(path) as tmp:
-                fig.savefig(tmp, format=fmt, dpi=DPI, metadata=metadata)
-            paths.append(path)
-    return paths
-
-
-def prepare_out_dir(out: str | Path) -> Path:
-    """The output folder, created if missing; bad input is a :class:`UserError` naming --out."""
-    if not str(out).strip():
-        raise UserError("--out is empty: give a folder for the figures")
-    out = Path(out)
-    if out.exists() and not out.is_dir():
-        raise UserError(f"--out {out}: is a file, not a folder")
-    try:
-        out.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise UserError(f"--out {out}: cannot create the folder ({exc.strerror})") from None
-    if not os.access(out, os.W_OK | os.X_OK):
-        raise UserError(f"--out {out}: folder is not writable")
-    return out
 
 
 # ---- the physics behind the figures -------------------------------------------------------
@@ -270,7 +171,8 @@ def hooke_config(cfg: Config) -> Config:
     """The user's config when it sets an elastic limit, else configs/overstretched.toml."""
     if math.isfinite(cfg.spring.yield_stretch):
         return cfg
-    return config.load(OVERSTRETCHED)
+    with resources.as_file(resources.files("springscene") / "configs" / OVERSTRETCHED) as path:
+        return config.load(path)
 
 
 def oscillation_energy(cfg: Config) -> float:
@@ -335,7 +237,7 @@ def _settings(cfg: Config) -> str:
         f"{'support' if d.type == 'support' else 'force'} drive "
         f"A = {d.amplitude:g} {'m' if d.type == 'support' else 'N'} at ω = {d.omega:.4g} rad/s")
     return (f"k = {cfg.spring.k:g} N/m, m = {cfg.ball.m:g} kg, L0 = {cfg.spring.L0:g} m, "
-            f"dt = {cfg.physics.dt:g} s, {INTEGRATOR_LABELS[cfg.physics.integrator]}, "
+            f"dt = {cfg.physics.dt:g} s, {INTEGRATORS[cfg.physics.integrator].label}, "
             f"b = {cfg.damping.b:g} kg/s, {drive}")
 
 
@@ -374,7 +276,7 @@ def position_figure(cfg: Config, traj: physics.Trajectory, *, periods: float = 3
         top.plot(t_fine[near_fine], y_eq + x_fine[near_fine], color=BLACK, lw=1.3,
                  label="closed form $y_{eq} + x(t)$")
         top.plot(t[near], y[near], "o", ms=3.2, color=BLUE, mec="none",
-                 label=f"simulation ({INTEGRATOR_LABELS[cfg.physics.integrator]}, "
+                 label=f"simulation ({INTEGRATORS[cfg.physics.integrator].label}, "
                        f"$\\Delta t$ = {cfg.physics.dt:g} s)")
         top.axhline(y_eq, color=GREY, ls="--", lw=1,
                     label=f"equilibrium $y_{{eq}}$ = {_signed(y_eq, '.4f')} m")
@@ -465,7 +367,7 @@ def _rest_potential(cfg: Config, traj: physics.Trajectory) -> float:
     """Us + Ug with the ball at rest at (the final) equilibrium."""
     osc = theory.Oscillator.from_config(cfg)
     axis = np.asarray(osc.axis)
-    s = cfg.system()
+    s = build.system(cfg)
     s.L0[:] = traj.L0[-1]
     stretch = theory.stiffening_stretch(cfg.spring.k, cfg.spring.k3, cfg.ball.m * osc.g)
     s.pos[1] = np.asarray(cfg.holder.pos) - axis * (traj.L0[-1] + stretch)
@@ -493,7 +395,7 @@ def phase_figure(cfg: Config, traj: physics.Trajectory,
             ax.plot(dy - float(np.dot(dosc.equilibrium, dosc.axis)), dv, color=SKY, lw=1.0,
                     label=f"with drag $b$ = {dcfg.damping.b:g} kg/s: spirals in")
         ax.plot(x, v, color=BLUE, lw=2.2,
-                label=f"simulation, {traj.t[-1]:g} s ({INTEGRATOR_LABELS[cfg.physics.integrator]})")
+                label=f"simulation, {traj.t[-1]:g} s ({INTEGRATORS[cfg.physics.integrator].label})")
         ax.plot(xc, vc, color=BLACK, ls="--", lw=1.2, label="closed form")
         ax.plot([x[0]], [v[0]], "o", color=VERMILLION, ms=7, label="start ($t$ = 0)", zorder=5)
         ax.axhline(0, color=GREY, lw=0.8)
@@ -592,11 +494,11 @@ def integrators_figure(cfg: Config, runs: dict[str, physics.Trajectory | str]):
                 continue
             if isinstance(run, str):
                 ax.plot([], [], color=INTEGRATOR_COLORS[name],
-                        label=f"{INTEGRATOR_LABELS[name]}: unstable at this step")
+                        label=f"{INTEGRATORS[name].label}: unstable at this step")
                 continue
             ends, peaks = per_period_max(run.t, energy_error(run, scale), T)
             ax.semilogy(ends, np.maximum(peaks, 1e-16), "o-", ms=3, color=INTEGRATOR_COLORS[name],
-                        label=f"{INTEGRATOR_LABELS[name]} (order {_order(name)}): "
+                        label=f"{INTEGRATORS[name].label} (order {INTEGRATORS[name].order}): "
                               f"{_fmt_err(peaks[-1])} after {run.t[-1]:g} s")
         ax.set_xlabel("time $t$ (s)")
         ax.set_ylabel("largest $|E - E_0|\\,/\\,\\frac{1}{2}kA^2$ in each period")
@@ -609,12 +511,6 @@ def integrators_figure(cfg: Config, runs: dict[str, physics.Trajectory | str]):
         ax.legend(loc="upper left", fontsize=10, ncol=1)
         ax.grid(True, which="major")
     return fig
-
-
-def _order(name: str) -> int:
-    from .integrators import ORDER
-
-    return ORDER[name]
 
 
 _SUPERSCRIPT = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
@@ -722,7 +618,6 @@ class Filmstrip:
 def filmstrip_frames(cfg: Config, *, n: int = FILMSTRIP_FRAMES, backend: str = "auto",
                      antialias: bool = True) -> Filmstrip:
     """n stills at t = 0, T/n, ..., (n-1)T/n, cropped around spring and ball alike."""
-    from .scene import Scene
 
     T = period_of(cfg)
     dt = cfg.physics.dt
@@ -730,19 +625,16 @@ def filmstrip_frames(cfg: Config, *, n: int = FILMSTRIP_FRAMES, backend: str = "
     osc = theory.Oscillator.from_config(cfg)
     axis = np.asarray(osc.axis)
     r = cfg.ball.radius
-    system = cfg.system()
-    with Scene(cfg, system, antialias=antialias, backend_name=backend) as scene:
+    system = build.system(cfg)
+    with render.make_scene(cfg, system, antialias=antialias, backend=backend) as scene:
         # a dry pass first, so that autoscale has seen every state and one view serves all
-        probe = cfg.system()
         balls = []
-        for target in steps:
-            physics.step(probe, target - probe.steps)
+        for probe in timeline.play(build.system(cfg), steps):
             scene.update(probe)
             balls.append(probe.pos[1].copy())
         frames = []
-        for target in steps:
-            physics.step(system, target - system.steps)
-            scene.update(system)
+        for state in timeline.play(system, steps):
+            scene.update(state)
             frames.append(scene.frame())
         view = scene.view
     h, w = frames[0].shape[:2]
@@ -846,18 +738,12 @@ def gallery(entries: list[tuple[str, str]], vector: list[str] = ()) -> str:
     return "\n".join(lines) + "\n"
 
 
-def write_text(path: Path, text: str) -> Path:
-    with atomic_path(path) as tmp:
-        tmp.write_text(text, encoding="utf-8")
-    return path
-
 
 # ---- everything ---------------------------------------------------------------------------
 
 def make_figures(cfg: Config, out_dir: str | Path, *, backend: str = "auto",
                  antialias: bool = True) -> list[Path]:
     """Write every figure, the GIF and ``figures.wiki`` into ``out_dir``; return their paths."""
-    from . import backend as backends
 
     out = prepare_out_dir(out_dir)
     backends.select(backend)
@@ -916,7 +802,7 @@ def _make_figures(cfg: Config, out: Path, backend: str, antialias: bool) -> list
     elif np.all(np.isnan(resid)):
         resid_text = ""
     else:
-        resid_text = (f" The residual is {INTEGRATOR_LABELS[cfg.physics.integrator]}'s phase "
+        resid_text = (f" The residual is {INTEGRATORS[cfg.physics.integrator].label}'s phase "
                       f"error and grows slowly: at most {np.nanmax(resid) * 1e3:.2g} mm "
                       f"({100 * np.nanmax(resid) / amp:.2g} % of the {amp * 100:.3g} cm "
                       f"amplitude) over {traj.t[-1]:g} s.")
@@ -1015,11 +901,11 @@ def _make_figures(cfg: Config, out: Path, backend: str, antialias: bool) -> list
     for name in INTEGRATORS:
         run = runs[name]
         if isinstance(run, str):
-            parts.append(f"{INTEGRATOR_LABELS[name]} is unstable at this step")
+            parts.append(f"{INTEGRATORS[name].label} is unstable at this step")
             continue
         _, peaks = per_period_max(run.t, energy_error(run, oscillation_energy(free)),
                                   period_of(free))
-        parts.append(f"{INTEGRATOR_LABELS[name]} {_fmt_err(peaks[-1])}")
+        parts.append(f"{INTEGRATORS[name].label} {_fmt_err(peaks[-1])}")
     free_text = "" if free is cfg else " (without its drive, released away from equilibrium)"
     captions.append(("integrators.png",
                      f"The integrators' energy error: the same config{free_text} "

@@ -26,16 +26,18 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import Iterable
 
 import numpy as np
 
-from . import lattice, physics
-from .colors import Color
-from .config import Config
+from ..colors import Color
+from ..model.lattice import Lattice
+from ..model.physics import System
+from ..settings import AtomCfg, BondCfg, CameraCfg, SceneCfg
 from .geometry import HelixBatch, frames_from_up, perpendicular_ups
-from .physics import System
 from .scene import SceneBase, _material, add_title, title_color
 
+HELIX_MAX_BONDS = 300     # style "auto": helices up to this many bonds, cylinders beyond
 # sizes as fractions of the lattice spacing d, when the config leaves them out
 ATOM_RADIUS = 0.25
 HELIX_RADIUS = 0.15
@@ -69,11 +71,10 @@ _PREFIXES = ((1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"), (1e-
 _QUANTITY = {"displacement": ("displacement", "m"), "speed": ("speed", "m/s")}
 
 
-def bond_style(cfg: Config, n_bonds: int) -> str:
+def bond_style(style: str, n_bonds: int) -> str:
     """``[bond] style``, with ``auto`` resolved by the number of bonds."""
-    style = cfg.bond.style
     if style == "auto":
-        return "helix" if n_bonds <= lattice.HELIX_MAX_BONDS else "cylinder"
+        return "helix" if n_bonds <= HELIX_MAX_BONDS else "cylinder"
     return style
 
 
@@ -97,48 +98,29 @@ def nice_ceil(x: float) -> float:
     return 10.0 ** (e + 1)
 
 
-def color_range(cfg: Config, system: System | None = None,
-                quantile: float = COLOR_QUANTILE) -> tuple[float, float]:
-    """The fixed (low, high) of ``[render] color_by`` (SI) for a whole video.
+def color_scale(kind: str, states: Iterable[System], n_values: int, lat: Lattice,
+                later: System | None = None, quantile: float = COLOR_QUANTILE
+                ) -> tuple[float, float]:
+    """The fixed (low, high) of colouring by ``kind`` (SI) for a whole video.
 
-    A copy of the config's system is run over the video's frame steps
-    (:func:`springscene.render.frame_steps` of ``[render]`` duration, fps, speed): the
-    top is the ``quantile`` of the values the free atoms show in all those frames,
-    rounded up to a round number (:func:`nice_ceil`); the rare faster (or farther)
-    atoms beyond it take the top colour, and a thermal crystal's bulk is not squeezed
-    into the bottom of the scale by a few outliers. A still shows the video's colours,
-    unless ``system`` is later than the video's last frame: then the same quantile of
-    its own state raises the top if that is higher. Nothing moving gives 1 % of d (or
-    of the speed of sound), so that the scale is never empty.
+    ``states`` are the system at each of the video's frames (``n_values`` values of the
+    free atoms in all): the top is their ``quantile``, rounded up to a round number
+    (:func:`nice_ceil`); the rare faster (or farther) atoms beyond it take the top
+    colour, and a thermal crystal's bulk is not squeezed into the bottom of the scale
+    by a few outliers. ``later``, a state after the video's last frame (a still), raises
+    the top if the same quantile of its own values is higher. Nothing moving gives 1 %
+    of d (or of the speed of sound), so that the scale is never empty.
     """
-    from . import render
-
-    kind = cfg.render.color_by
     if kind == "none":
         raise ValueError('the config colours by nothing ([render] color_by = "none")')
-    lat = lattice.Lattice.from_config(cfg)
     sites = lat.sites()
-    r = cfg.render
-    steps = render.frame_steps(r.duration, r.fps, cfg.physics.dt, r.speed)
-    s = cfg.system()
-    free = ~s.fixed
-
-    def frames():
-        for target in steps:
-            physics.step(s, int(target) - s.steps)
-            yield scalar(kind, s, sites)[free]
-
-    hi = streamed_quantile(frames(), len(steps) * int(free.sum()), quantile)
-    last = int(steps[-1]) if len(steps) else -1
-    if system is not None and system.steps > last and (~system.fixed).any():
-        # a still later than the video: its own state may go beyond the video's range
-        hi = max(hi, float(np.quantile(scalar(kind, system, sites)[~system.fixed], quantile)))
+    hi = streamed_quantile((scalar(kind, s, sites)[~s.fixed] for s in states), n_values,
+                           quantile)
+    if later is not None and (~later.fixed).any():
+        hi = max(hi, float(np.quantile(scalar(kind, later, sites)[~later.fixed], quantile)))
     if not hi > 0:
         hi = 0.01 * (lat.d if kind == "displacement" else lat.sound_speed)
     return 0.0, nice_ceil(hi)
-
-
-_color_range = color_range      # for LatticeScene, whose argument has that name
 
 
 def streamed_quantile(chunks, total: int, q: float) -> float:
@@ -174,7 +156,7 @@ def display_unit(kind: str, high: float) -> tuple[str, float]:
 
 def colormap_table(name: str = COLORMAP, n: int = LUT_SIZE) -> np.ndarray:
     """The colour map as an (n, 3) uint8 table, the same colours the bar shows."""
-    import matplotlib
+    import matplotlib  # noqa: PLC0415  heavy
 
     cmap = matplotlib.colormaps[name].resampled(n)
     return np.round(cmap(np.arange(n))[:, :3] * 255).astype(np.uint8)
@@ -233,16 +215,16 @@ class ColorBar:
     def render(cls, vmax: float, title: str, vertical: bool, text_color: str,
                size: tuple[int, int], x: int = 0, y: int = 0) -> "ColorBar":
         """Draw a bar from 0 to ``vmax`` (in the unit of ``title``) with matplotlib."""
-        from matplotlib import colors
+        from matplotlib import colors  # noqa: PLC0415  heavy
         from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.cm import ScalarMappable
+        from matplotlib.cm import ScalarMappable  # noqa: PLC0415  heavy
         from matplotlib.figure import Figure
 
         w, h = size
         fig = Figure(figsize=(w / BAR_DPI, h / BAR_DPI), dpi=BAR_DPI)
         fig.patch.set_alpha(0.0)
         canvas = FigureCanvasAgg(fig)
-        import matplotlib
+        import matplotlib  # noqa: PLC0415  heavy
 
         cmap = matplotlib.colormaps[COLORMAP].resampled(LUT_SIZE)
         mappable = ScalarMappable(norm=colors.Normalize(0.0, vmax), cmap=cmap)
@@ -273,47 +255,50 @@ class LatticeScene(SceneBase):
 
     Parameters
     ----------
-    cfg : Config
-        A lattice config (``cfg.is_lattice``).
     system : System
-        The state the scene starts from (:func:`springscene.lattice.build`'s).
+        The state the scene starts from (:func:`springscene.model.lattice.build`'s).
+    lattice : Lattice
+        The lattice's numbers (its spacing sizes the atoms and bonds; its sites are the
+        displacements' zero).
+    canvas, camera, atom, bond : SceneCfg, CameraCfg, AtomCfg, BondCfg
+        What to draw with: a lattice config's sections of those names.
+    color_by : str
+        ``[render] color_by``: "none", "displacement" or "speed".
+    color_range : (low, high) or None
+        The fixed range (SI) of ``color_by`` (:func:`color_scale`); needed unless
+        ``color_by`` is "none".
     antialias : bool
         4x multisampling when True; off for draft renders.
     backend_name : str
         "auto", "egl" or "osmesa".
-    color_range : (low, high) or None
-        The fixed range (SI) of ``[render] color_by``; None computes it with
-        :func:`color_range` from the config (the video's frames; ``system``'s state
-        too when it is later than the video's end).
     """
 
-    def __init__(self, cfg: Config, system: System, antialias: bool = True,
-                 backend_name: str = "auto",
-                 color_range: tuple[float, float] | None = None) -> None:
-        if not cfg.is_lattice:
-            raise ValueError("LatticeScene draws a [lattice] config; use scene.Scene")
-        pl = self._open(cfg, antialias, backend_name)
-        import pyvista as pv     # after the backend is chosen
-        from vtkmodules.util.numpy_support import vtk_to_numpy
+    def __init__(self, system: System, *, lattice: Lattice, canvas: SceneCfg,
+                 camera: CameraCfg, atom: AtomCfg, bond: BondCfg, color_by: str = "none",
+                 color_range: tuple[float, float] | None = None, antialias: bool = True,
+                 backend_name: str = "auto") -> None:
+        if color_by != "none" and color_range is None:
+            raise ValueError(f"colouring by {color_by} needs a color_range (color_scale)")
+        pl = self._open(canvas, camera, antialias, backend_name)
+        import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK  # noqa: PLC0415  heavy
 
-        lat = lattice.Lattice.from_config(cfg)
+        lat = lattice
         self.lattice = lat
         d = lat.d
         self.sites = lat.sites()
         self.held = system.fixed.copy()
         self._free_mask = ~self.held
         self._i, self._j = system.i.copy(), system.j.copy()
-        self.atom_radius = cfg.atom.radius if cfg.atom.radius is not None else ATOM_RADIUS * d
+        self.atom_radius = atom.radius if atom.radius is not None else ATOM_RADIUS * d
 
         # the colours: per atom, fixed or through the colour map
-        self.color_by = cfg.render.color_by
+        self.color_by = color_by
         self.color_range: tuple[float, float] | None = None
         self.unit: tuple[str, float] | None = None
         self.lut = colormap_table()
-        self.held_color = held_color(cfg.atom.color)
+        self.held_color = held_color(atom.color)
         if self.color_by != "none":
-            if color_range is None:
-                color_range = _color_range(cfg, system)
             lo, hi = (float(v) for v in color_range)
             if not hi > lo:
                 raise ValueError(f"color_range must have low < high, got {color_range}")
@@ -323,13 +308,13 @@ class LatticeScene(SceneBase):
         # atoms: one point cloud, each point a sphere imposter
         self.atoms = pv.PolyData(np.asarray(system.pos, np.float32))
         rgb = np.empty((len(system.pos), 3), np.uint8)
-        rgb[:] = _to_uint8(cfg.atom.color)
+        rgb[:] = _to_uint8(atom.color)
         rgb[self.held] = _to_uint8(self.held_color)
         self.atoms.point_data["rgb"] = rgb
         self.atoms.GetPointData().SetActiveScalars("rgb")
         self._atom_xyz = vtk_to_numpy(self.atoms.GetPoints().GetData())
         self._atom_rgb = vtk_to_numpy(self.atoms.GetPointData().GetArray("rgb"))
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy  # noqa: PLC0415  heavy
 
         # held atoms smaller: the gray shell of a crystal held at its outer layer lets the
         # coloured atoms inside be seen
@@ -340,11 +325,11 @@ class LatticeScene(SceneBase):
         mapper.SetScaleArray("radius")
         mapper.SetColorModeToDirectScalars()
         mapper.ScalarVisibilityOn()
-        self.atom_actor = self._add_actor(mapper, cfg.atom.color, "atoms")
+        self.atom_actor = self._add_actor(mapper, atom.color, "atoms")
 
         # bonds: one object
-        self.bond_style = bond_style(cfg, len(self._i))
-        b = cfg.bond
+        self.bond_style = bond_style(bond.style, len(self._i))
+        b = bond
         if self.bond_style == "helix":
             radius = b.radius if b.radius is not None else HELIX_RADIUS * d
             thickness = b.thickness if b.thickness is not None else HELIX_THICKNESS * d
@@ -358,12 +343,12 @@ class LatticeScene(SceneBase):
         self._place_camera(system)      # the first view sizes the helices' polygons
         getattr(self, f"_make_{self.bond_style}")(pv, b, radius, system)
 
-        add_title(pl, cfg)
+        add_title(pl, canvas)
         self.update(system)
         self.color_bar = self._make_color_bar() if self.color_by != "none" else None
 
     def _add_actor(self, mapper, color, name: str):
-        from vtkmodules.vtkRenderingCore import vtkActor
+        from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy
 
         actor = vtkActor()
         actor.SetMapper(mapper)
@@ -374,7 +359,7 @@ class LatticeScene(SceneBase):
     # -- the bonds, by style -----------------------------------------------------------
 
     def _make_helix(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper
 
         wire = self._bond_extent - radius
@@ -398,7 +383,7 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_cylinder(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.util.numpy_support import vtk_to_numpy
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLStickMapper
 
         n = len(self._i)
@@ -422,9 +407,9 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_line(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData  # noqa: PLC0415  heavy
         from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy
 
         lines = vtkPolyData()
         lines.SetPoints(self.atoms.GetPoints())          # the atoms' own points: no update
@@ -489,7 +474,7 @@ class LatticeScene(SceneBase):
         camera) instead of the world's: the same numbers for the default camera (forward
         -z, up +y), and for an oblique ``[camera] forward`` a range that keeps every atom
         in the picture (VPython's world-axis extents clip a crystal's near corner)."""
-        c = self.cfg.camera
+        c = self.camera
         fwd = np.asarray(c.forward, float)
         fwd = fwd / np.linalg.norm(fwd)
         right = np.cross(fwd, c.up)
@@ -520,7 +505,7 @@ class LatticeScene(SceneBase):
     def _make_color_bar(self) -> ColorBar | None:
         """The bar at the right when the atoms leave room there, else at the bottom;
         none on a canvas too small to hold one legibly."""
-        w, h = self.cfg.scene.width, self.cfg.scene.height
+        w, h = self.canvas.width, self.canvas.height
         px = self.view.project(np.concatenate([self.sites, self._atom_xyz]))
         r_px = self._radius_px()
         right_free = w - (float(px[:, 0].max()) + r_px)
@@ -544,7 +529,7 @@ class LatticeScene(SceneBase):
             x, y = (w - hw) // 2, h - hh - max(BAR_MARGIN // 2, int((bottom_free - hh) / 2))
         vmax = self.color_range[1] / self.unit[1]
         return ColorBar.render(vmax, self.color_title, vertical,
-                               title_color(self.cfg.scene.background), size,
+                               title_color(self.canvas.background), size,
                                max(x, 0), max(y, 0))
 
     def _pixels_per_metre(self, system: System) -> float:

@@ -1,0 +1,95 @@
+"""The jobs a user runs, as library calls: the command line and a notebook call the same.
+
+Each takes a checked :class:`~springscene.settings.Config` (:func:`springscene.config.load`)
+and chooses, where a lattice of atoms and the page's single ball differ, the right
+science and drawing:
+
+- :func:`simulate`: the run as numbers (a trajectory, or a lattice's totals), and CSV;
+- :func:`still`, :func:`render`: a picture and a video (:mod:`springscene.render`);
+- :func:`analyze` and :func:`report`: what the run measures beside theory;
+- :func:`sweep`: a resonance curve;
+- :func:`figures`: the wiki page's figure set, or a lattice's;
+- :func:`vpython`: a VPython program run headless.
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import numpy as np
+
+from . import render as pipeline
+from .figures import make_figures as oscillator_figures
+from .figures.matter import make_figures as matter_figures
+from .model import physics
+from .outputs import check_output
+from .science import analysis, matter
+from .science import sweep as sweeps
+from .settings import Config
+from .vpython.runner import ProgramResult, run_program
+
+RenderStats = pipeline.RenderStats
+
+
+def simulate(cfg: Config, duration: float | None = None, out: str | Path | None = None
+             ) -> physics.Trajectory | np.ndarray:
+    """The run from t = 0 to ``duration`` (default: the config's), one row per step,
+    written as CSV to ``out`` when given: the ball's trajectory, or a lattice's totals."""
+    path = check_output(out, (".csv",)) if out is not None else None
+    result = pipeline.simulate(cfg, duration)
+    if path is not None:
+        pipeline.write_csv(result, path)
+    return result
+
+
+def still(cfg: Config, time_s: float = 0.0, out: str | Path | None = None, *,
+          backend: str = "auto", antialias: bool = True) -> np.ndarray:
+    """The scene at the step nearest ``time_s`` as an (h, w, 3) image, and PNG at ``out``."""
+    return pipeline.still(cfg, time_s, out, backend=backend, antialias=antialias)
+
+
+def render(cfg: Config, out: str | Path, **options) -> pipeline.RenderStats:
+    """The motion as MP4 or GIF (options: :func:`springscene.render.render_video`'s)."""
+    return pipeline.render_video(cfg, out, **options)
+
+
+def analyze(cfg: Config, duration: float | None = None) -> dict:
+    """Measured and theoretical quantities of the run (SI), the lattice's or the ball's."""
+    if cfg.is_lattice:
+        return matter.analyze(cfg, duration)
+    return analysis.analyze(cfg, duration)
+
+
+def report(cfg: Config, result: dict, as_json: bool = False) -> str:
+    """:func:`analyze`'s result as a table, or as JSON."""
+    if cfg.is_lattice:
+        return json.dumps(result, indent=2) if as_json else matter.table(result)
+    if as_json:
+        keys = ("measured", "theory", "regime", "integrator", "dt", "duration")
+        return json.dumps({key: result[key] for key in keys}, indent=2)
+    return analysis.table(result)
+
+
+def sweep(cfg: Config, omega: np.ndarray, *, periods: float = 200,
+          out: str | Path | None = None) -> sweeps.SweepResult:
+    """Steady-state amplitude against drive frequency; CSV at ``out`` when given."""
+    path = check_output(out, (".csv",)) if out is not None else None
+    result = sweeps.sweep(cfg, omega, periods=periods)
+    if path is not None:
+        sweeps.write_csv(result, path)
+    return result
+
+
+def figures(cfg: Config, out: str | Path, *, backend: str = "auto",
+            antialias: bool = True) -> list[Path]:
+    """The figure set of the config into the folder ``out``: the wiki page's, or a lattice's."""
+    if cfg.is_lattice:
+        return matter_figures(cfg, out)
+    return oscillator_figures(cfg, out, backend=backend, antialias=antialias)
+
+
+def vpython(program: str | Path, out: str | Path, **options) -> ProgramResult:
+    """Run a VPython program headless to a video or still (options:
+    :func:`springscene.vpython.runner.run_program`'s)."""
+    return run_program(program, out, **options)
