@@ -20,7 +20,7 @@ import pytest
 
 from conftest import BASELINES, ROOT, WIKI, run_cli
 from imagecompare import check
-from springscene import build, config, figures, render
+from springscene import config, figures, render
 from springscene.figures.files import save_figure
 from springscene.science import sweep, theory
 from springscene.view.plotstyle import figure_image

@@ -19,7 +19,6 @@ TIMES = (0.0, 0.13, 0.25, 0.38)   # bottom, middle, top, middle of the first per
 
 @pytest.fixture(scope="module")
 def scene(wiki_cfg):
-    from springscene.view.scene import Scene
 
     sc = render.make_scene(wiki_cfg, build.system(wiki_cfg))
     yield sc
@@ -80,7 +79,6 @@ def test_still_matches_baseline(tmp_path, backend_name, t, regen):
 
 def test_baseline_tolerance_catches_a_ball_moved_one_pixel(wiki_cfg):
     """The stated tolerance is tight enough: the ball 1 px lower fails it."""
-    from springscene.view.scene import Scene
 
     base = iio.imread(BASELINES / "wiki_t0.00.png")
     s = build.system(wiki_cfg)
@@ -96,7 +94,6 @@ def test_baseline_tolerance_catches_a_ball_moved_one_pixel(wiki_cfg):
 
 
 def test_title_contrasts_with_background(wiki_cfg):
-    from springscene.view.scene import Scene
 
     dark = config.from_dict({"scene": {"background": "black"}})
     with render.make_scene(dark, build.system(dark)) as sc:
@@ -193,7 +190,6 @@ def test_frame_times_are_whole_steps_in_real_time():
 
 def test_driven_holder_moves_with_its_support():
     """A driven support's box follows the support node; the spring still starts there."""
-    from springscene.view.scene import Scene
 
     cfg = config.override(config.load(WIKI.parent / "driven.toml"), "drive", amplitude=0.03,
                           omega=3.0)

@@ -17,7 +17,7 @@ from conftest import BASELINES, ROOT, WIKI, run_cli
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, check, compare
 from springscene import build, config, render
 from springscene.model import physics
-from springscene.view.overlay import ENERGY_BARS, OVERLAYS, TRACE_COLOR, Overlays, parse_overlays
+from springscene.view.overlay import ENERGY_BARS, OVERLAYS, TRACE_COLOR, parse_overlays
 
 DURATION, FPS = 0.5, 20          # frame f at t = f / 20 s: frame 5 is t = 0.25 s
 W, H = 900, 600                  # the wiki scene
@@ -213,7 +213,6 @@ def test_energy_bars_follow_the_energies(videos, layout, cfg):
 def test_overlay_frame_matches_baseline(videos, cfg, regen):
     """The composed frame at t = 0.25 s, lossless, against a committed baseline; the
     video's frame 5 is that frame up to H.264 noise, and its scene part is the still."""
-    from springscene.view.scene import Scene
 
     ov = render.make_overlays(cfg, ALL)
     s = next(states(cfg, [5]))

@@ -14,7 +14,7 @@ import pytest
 from conftest import BASELINES, ROOT, WIKI, run_cli
 from imagecompare import check, compare
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF
-from springscene import build, config, render
+from springscene import config, render
 from springscene.view import camera
 from springscene.vpython import runtime
 from springscene.vpython.runner import run_program

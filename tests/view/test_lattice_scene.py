@@ -12,11 +12,10 @@ import pytest
 from conftest import BASELINES, require_backend, run_cli
 from imagecompare import check
 from springscene import build, config, render
-from springscene.model import lattice, physics
+from springscene.model import physics
 from springscene.view import camera
 from springscene.view import lattice_scene as ls
 from springscene.view.geometry import HelixBatch, HelixFrame, HelixTube, frames_from_up
-from springscene.view.lattice_scene import LatticeScene
 from springscene.view.scene import AMBIENT, LIGHTS
 
 W, H = 450, 300

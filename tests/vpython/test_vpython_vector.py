@@ -11,7 +11,7 @@ import pytest
 
 from springscene import build, config
 from springscene.model import physics
-from test_physics import wiki_loop
+from wikiloop import wiki_loop
 from springscene.vpython import vmath
 import importlib
 
