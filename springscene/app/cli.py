@@ -7,7 +7,6 @@ Everything a command does is a call into the ``springscene`` library.
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import warnings
 

@@ -45,6 +45,7 @@ from ..settings import Config
 from ..view import backend as backends
 from ..view.plotstyle import (BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, SKY, VERMILLION,
                               new_figure, style)
+from ..units import MINUS, percent
 from .files import prepare_out_dir, save_figure, write_text
 
 # the config of the Hooke's-law figure when the user's spring has no elastic limit
@@ -249,7 +250,7 @@ def _linear(cfg: Config) -> bool:
 def _pct(measured: float | None, expected: float | None) -> str:
     if measured is None or not expected:
         return "n/a"
-    return _signed(f"{100 * (measured - expected) / abs(expected):+.3f}", "") + " %"
+    return percent((measured - expected) / abs(expected), minus=MINUS)
 
 
 # ---- the figures --------------------------------------------------------------------------

@@ -17,23 +17,18 @@ from ..model.constants import BOLTZMANN
 from ..science.matter import ARRIVAL_FRACTION, measure
 from ..settings import Config
 from ..view.plotstyle import BLACK, BLUE, GREY, VERMILLION, new_figure, style
+from ..units import MINUS, percent, prefixes, si_prefix
 from .files import prepare_out_dir, save_png
 
 # ---- figures -----------------------------------------------------------------------------
 
 SPECTRUM_DB = 60          # the dispersion figure's spectra: this many dB below each mode's peak
 SHADE = "#e6e6e6"         # a shaded span (the palette PNG whitens anything above 245)
-_PREFIXES = ((1e-21, "z"), (1e-18, "a"), (1e-15, "f"), (1e-12, "p"), (1e-9, "n"),
-             (1e-6, "µ"), (1e-3, "m"), (1.0, ""))
 
 
 def si_scale(top: float) -> tuple[float, str]:
     """(factor, prefix) that shows values up to ``top`` as 1 to 999 of the prefixed unit."""
-    top = abs(top)
-    for factor, prefix in reversed(_PREFIXES):
-        if top >= factor:
-            return factor, prefix
-    return _PREFIXES[0]
+    return si_prefix(top, largest="", smallest="z")
 
 
 def power_scale(top: float) -> tuple[float, str]:
@@ -45,7 +40,7 @@ def power_scale(top: float) -> tuple[float, str]:
 
 
 def _pct(x: float) -> str:
-    return f"{100 * x:+.3f} %".replace("-", "−")
+    return percent(x, minus=MINUS)
 
 
 def pulse_figure(result: dict):
@@ -115,7 +110,8 @@ def dispersion_figure(result: dict):
     meas = np.array(D["measured"])
     th = np.array(D["theory"])
     omega, spectra = D["_spectrum"]
-    lf, lp = next(((f, p) for f, p in _PREFIXES if math.pi / lat.d * f >= 1), (1.0, ""))
+    lf, lp = next(((f, p) for f, p in reversed(prefixes("", "z")) if math.pi / lat.d * f >= 1),
+                  (1.0, ""))
     qf = 1 / lf
     w_top = 1.12 * 2 * lat.omega0
     wf, wl = power_scale(w_top)

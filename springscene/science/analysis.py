@@ -28,6 +28,7 @@ from ..model import physics, timeline
 from . import theory
 from .sweep import check_sweepable
 from ..settings import Config
+from ..units import percent
 from ..errors import UserError
 
 MIN_STEPS_PER_PERIOD = 12
@@ -260,7 +261,7 @@ def table(result: dict) -> str:
         th = result["theory"][key]
         diff = ""
         if meas is not None and th:
-            diff = f"{100 * (meas - th) / abs(th):+.3f} %"
+            diff = percent((meas - th) / abs(th))
         lines.append(f"{key:<22}{_num(meas):>14}{_num(th):>14}{diff:>12}  {UNITS[key]}")
     return "\n".join(lines)
 

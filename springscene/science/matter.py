@@ -76,6 +76,7 @@ import numpy as np
 from ..errors import UserError
 from ..model.constants import BOLTZMANN
 from ..settings import Config
+from ..units import percent
 from .. import config
 from .lattice_run import THERMAL_BLOCKS, Geometry, Record, plan_run, simulate
 
@@ -439,7 +440,7 @@ def _num(x: float | None) -> str:
 def _row(label: str, meas, th, unit: str, err=None) -> str:
     diff = ""
     if meas is not None and th:
-        diff = f"{100 * (meas - th) / abs(th):+.3f} %"
+        diff = percent((meas - th) / abs(th))
     m = _num(meas) + (f" ± {err:.2g}" if err is not None else "")
     return f"{label:<30}{m:>22}{_num(th):>14}{diff:>12}  {unit}"
 

@@ -34,6 +34,7 @@ from ..colors import Color
 from ..model.lattice import Lattice
 from ..model.physics import System
 from ..settings import AtomCfg, BondCfg, CameraCfg, SceneCfg
+from ..units import si_prefix
 from .geometry import HelixBatch, frames_from_up, perpendicular_ups
 from .scene import SceneBase, _material, add_title, title_color
 
@@ -66,8 +67,6 @@ BAR_HORIZONTAL = (400, 66)       # px at the bottom
 BAR_MIN_VERTICAL = 140           # px: the shortest vertical bar (title and ends included)
 BAR_MIN_HORIZONTAL = 200         # px: the narrowest horizontal one
 
-_PREFIXES = ((1e3, "k"), (1.0, ""), (1e-3, "m"), (1e-6, "µ"), (1e-9, "n"), (1e-12, "p"),
-             (1e-15, "f"))
 _QUANTITY = {"displacement": ("displacement", "m"), "speed": ("speed", "m/s")}
 
 
@@ -146,12 +145,8 @@ def streamed_quantile(chunks, total: int, q: float) -> float:
 def display_unit(kind: str, high: float) -> tuple[str, float]:
     """The unit to label ``kind`` values up to ``high`` (SI) with, and its size in SI:
     the SI prefix that puts ``high`` between 1 and 1000 (e.g. ``("pm", 1e-12)``)."""
-    base = _QUANTITY[kind][1]
-    for scale, prefix in _PREFIXES:
-        if high >= scale * (1 - 1e-9):
-            return prefix + base, scale
-    scale, prefix = _PREFIXES[-1]
-    return prefix + base, scale
+    scale, prefix = si_prefix(high, largest="k", smallest="f", tolerance=1e-9)
+    return prefix + _QUANTITY[kind][1], scale
 
 
 def colormap_table(name: str = COLORMAP, n: int = LUT_SIZE) -> np.ndarray:

@@ -24,6 +24,7 @@ import numpy as np
 from ..errors import UserError
 from ..model import physics
 from ..settings import SceneCfg
+from ..units import si_prefix
 from .plotstyle import agg_figure, panel_style
 
 OVERLAYS = ("time", "graph", "energy")
@@ -63,11 +64,8 @@ def parse_overlays(text: str, flag: str = "--overlay") -> tuple[str, ...]:
 
 def clock_text(t: float, speed: float = 1.0) -> str:
     """The clock's text: ``t = 1.23 s``; in ps or fs when a video second is that short."""
-    for unit, scale in (("s", 1.0), ("ms", 1e-3), ("µs", 1e-6), ("ns", 1e-9), ("ps", 1e-12),
-                        ("fs", 1e-15)):
-        if speed >= 0.5 * scale:
-            break
-    return f"t = {t / scale:.2f} {unit}"
+    scale, prefix = si_prefix(speed, largest="", smallest="f", tolerance=0.5)
+    return f"t = {t / scale:.2f} {prefix}s"
 
 
 def _limits(values, include: tuple[float, ...] = (), pad: float = 0.08,
