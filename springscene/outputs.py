@@ -71,7 +71,7 @@ def atomic_path(path: Path) -> Iterator[Path]:
 
 
 def write_png(path: Path, image: np.ndarray) -> None:
-    import imageio.v3 as iio
+    import imageio.v3 as iio  # noqa: PLC0415  heavy: imageio
 
     with atomic_path(path) as tmp:
         iio.imwrite(tmp, image, extension=".png")
@@ -90,7 +90,7 @@ class VideoWriter:
         self._gif: list = []
         self._palette = None
         if path.suffix.lower() == ".mp4":
-            import imageio_ffmpeg
+            import imageio_ffmpeg  # noqa: PLC0415  heavy: imageio
 
             w, h = size
             pix = "yuv420p" if w % 2 == 0 and h % 2 == 0 else "yuv444p"
@@ -106,7 +106,7 @@ class VideoWriter:
         if self._mp4 is not None:
             self._mp4.send(np.ascontiguousarray(frame))
         else:
-            from PIL import Image
+            from PIL import Image  # noqa: PLC0415  heavy: Pillow
 
             image = Image.fromarray(frame)
             if self._palette is None:   # one palette for the whole GIF: no colour flicker

@@ -32,28 +32,39 @@ class _Parser(argparse.ArgumentParser):
 def _build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="springscene", description="Headless ball-and-spring scenes like VPython's.")
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
+    _add_numbers_commands(sub)
+    _add_picture_commands(sub)
+    _add_vpython_command(sub)
+    s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
+    s.add_argument("--backend", default="auto", choices=BACKENDS)
+    return p
 
-    def renders(sp: argparse.ArgumentParser) -> None:
-        sp.add_argument("--backend", default="auto", choices=BACKENDS,
-                        help="off-screen OpenGL: EGL, OSMesa, or auto (EGL if present)")
-        sp.add_argument("--draft", action="store_true", help="no anti-aliasing (faster)")
 
-    def physics(sp: argparse.ArgumentParser) -> None:
-        sp.add_argument("--integrator", choices=NAMES,
-                        help="time integrator (default: the config's, else euler-cromer)")
-        sp.add_argument("--dt", type=float, help="time step in s (default: the config's)")
+def _renders(sp: argparse.ArgumentParser) -> None:
+    sp.add_argument("--backend", default="auto", choices=BACKENDS,
+                    help="off-screen OpenGL: EGL, OSMesa, or auto (EGL if present)")
+    sp.add_argument("--draft", action="store_true", help="no anti-aliasing (faster)")
 
+
+def _physics(sp: argparse.ArgumentParser) -> None:
+    sp.add_argument("--integrator", choices=NAMES,
+                    help="time integrator (default: the config's, else euler-cromer)")
+    sp.add_argument("--dt", type=float, help="time step in s (default: the config's)")
+
+
+def _add_numbers_commands(sub) -> None:
+    """simulate, analyze and sweep: numbers, no pictures."""
     s = sub.add_parser("simulate", help="write the ball's trajectory as CSV")
     s.add_argument("config")
     s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
     s.add_argument("--out", required=True, help="trajectory.csv")
-    physics(s)
+    _physics(s)
 
     s = sub.add_parser("analyze", help="period, frequency, energy... measured beside theory")
     s.add_argument("config")
     s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
     s.add_argument("--json", action="store_true", help="one JSON object instead of a table")
-    physics(s)
+    _physics(s)
 
     s = sub.add_parser("sweep", help="steady-state amplitude against drive frequency")
     s.add_argument("config")
@@ -62,14 +73,17 @@ def _build_parser() -> argparse.ArgumentParser:
     s.add_argument("--periods", type=float, default=200,
                    help="drive periods of the slowest frequency to run (default 200)")
     s.add_argument("--out", help="curve.csv (omega, frequency, amplitude, theory)")
-    physics(s)
+    _physics(s)
 
+
+def _add_picture_commands(sub) -> None:
+    """still, render and figures: pictures of a config."""
     s = sub.add_parser("still", help="render the scene at one time to PNG")
     s.add_argument("config")
     s.add_argument("--time", type=float, default=0.0, help="simulated time in s (nearest step)")
     s.add_argument("--out", required=True, help="frame.png")
-    renders(s)
-    physics(s)
+    _renders(s)
+    _physics(s)
 
     s = sub.add_parser("render", help="render the oscillation to MP4 or GIF in real time")
     s.add_argument("config")
@@ -83,14 +97,16 @@ def _build_parser() -> argparse.ArgumentParser:
     s.add_argument("--overlay", default="", metavar="LIST",
                    help="comma list of: " + ", ".join(OVERLAYS)
                    + " (a clock, a y(t) graph under the scene, energy bars beside it)")
-    renders(s)
-    physics(s)
+    _renders(s)
+    _physics(s)
 
     s = sub.add_parser("figures", help="the wiki page's figures, GIF and gallery snippet")
     s.add_argument("config")
     s.add_argument("--out", required=True, help="folder for the figures (created if missing)")
-    renders(s)
+    _renders(s)
 
+
+def _add_vpython_command(sub) -> None:
     s = sub.add_parser("vpython", help="run a VPython program headless: a video (or still) "
                        "and the page VPython would show")
     s.add_argument("program", help="a VPython 7 program (from vpython import *)")
@@ -104,11 +120,7 @@ def _build_parser() -> argparse.ArgumentParser:
                    help="graph: the program's graphs under the scene")
     s.add_argument("--no-page", action="store_true", help="write no page.html")
     s.add_argument("--quiet", action="store_true", help="no summary line")
-    renders(s)
-
-    s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
-    s.add_argument("--backend", default="auto", choices=BACKENDS)
-    return p
+    _renders(s)
 
 
 def _run(args: argparse.Namespace) -> int:

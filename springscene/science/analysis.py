@@ -19,7 +19,7 @@ Theory comes from :mod:`springscene.theory`.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -83,6 +83,45 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     """Measured and theoretical quantities of the config's oscillation (SI units)."""
     cfg = config.override(cfg, "render", duration=duration)
     osc = theory.Oscillator.from_config(cfg)
+    _check_measurable(cfg, osc, duration)
+    traj = physics.run(build.system(cfg), timeline.step_at(cfg.render.duration, cfg.physics.dt,
+                                                              "--duration"))
+    extra_measured, extra_theory = {}, {}
+    plastic = bool(np.any(traj.L0 != traj.L0[0]))
+    if plastic:
+        traj, osc = _after_permanent_set(cfg, osc, traj, extra_measured, extra_theory)
+    run = _Run.of(cfg, osc, traj)
+    T = period_from_crossings(run.t[run.sel], run.x[run.sel])
+    measured: dict[str, float | None] = {
+        "period": T,
+        "frequency": 1 / T if T else None,
+        "angular_frequency": 2 * math.pi / T if T else None,
+        "equilibrium_stretch": float(run.holder_y - run.y_eq - traj.L0[-1]),
+    }
+    amplitudes, th = _driven_motion(cfg, run) if cfg.driven else _free_motion(cfg, run, T)
+    measured.update(amplitudes)
+    theory_: dict[str, float | None] = {
+        "period": th["period"] if math.isfinite(th["period"]) else None,
+        "equilibrium_stretch": osc.equilibrium_stretch,
+        **{k: th[k] for k in ("amplitude", "max_speed", "max_acceleration", "energy")},
+    }
+    P = theory_["period"]
+    theory_["frequency"] = 1 / P if P else None
+    theory_["angular_frequency"] = 2 * math.pi / P if P else None
+    damped = cfg.damping.b > 0
+    if damped:
+        _measure_damping(cfg, run, th, measured, theory_)
+    measured.update(extra_measured)
+    theory_.update(extra_theory)
+    keys = KEYS + (DAMPED_KEYS if damped else ()) + tuple(extra_measured)
+    return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
+            "duration": float(traj.t[-1] + traj.t0), "regime": _regime(cfg, osc, traj, plastic),
+            "measured": {k: measured.get(k) for k in keys},
+            "theory": {k: theory_.get(k) for k in keys}}
+
+
+def _check_measurable(cfg: Config, osc: theory.Oscillator, duration: float | None) -> None:
+    """Refuse a drive off the line of motion, too few steps a period, too short a run."""
     if cfg.driven:
         check_sweepable(cfg, "analyze")
     if osc.omega_d > 0 and osc.period / cfg.physics.dt < MIN_STEPS_PER_PERIOD:
@@ -94,122 +133,130 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
         where = "--duration" if duration is not None else f"{cfg.source}: [render] duration"
         raise UserError(f"{where} {cfg.render.duration:g} s is too short to analyze: it needs "
                         f"at least {need:.3g} s ({_why_needed(cfg, osc)})")
-    traj = physics.run(build.system(cfg), timeline.step_at(cfg.render.duration, cfg.physics.dt,
-                                                              "--duration"))
+
+
+def _after_permanent_set(cfg: Config, osc: theory.Oscillator, traj: physics.Trajectory,
+                         extra_measured: dict, extra_theory: dict
+                         ) -> tuple[physics.Trajectory, theory.Oscillator]:
+    """The spring took a permanent set: the motion after it, about the new equilibrium;
+    theory (perfect plasticity) starts it at rest at the elastic limit."""
     axis = np.asarray(osc.axis)
-    m = cfg.ball.m
-    driven = cfg.driven
-    damped = cfg.damping.b > 0
-    plastic = bool(np.any(traj.L0 != traj.L0[0]))
-    extra_measured, extra_theory = {}, {}
-    if plastic:
-        # the spring took a permanent set: measure the motion after it, about the new
-        # equilibrium; theory (perfect plasticity) starts it at rest at the elastic limit
-        s_y, s_eq = cfg.spring.yield_stretch, osc.equilibrium_stretch
-        extra_measured["permanent_set"] = float(traj.L0[-1] - traj.L0[0])
-        extra_theory["permanent_set"] = theory.permanent_set(osc, s_y)
-        i_set = int(np.flatnonzero(np.diff(traj.L0))[-1]) + 1
-        traj = _after(traj, i_set)
-        shift = axis * (extra_theory["permanent_set"] or 0.0)
-        osc = replace(osc, L0=float(traj.L0[-1]), x0=-(s_y - s_eq), v0=0.0,
-                      equilibrium=tuple(np.asarray(osc.equilibrium) - shift))
-    sel = slice(_steady_start(cfg, osc, traj.t), None) if driven else slice(None)
-    # driven: the mean over whole drive periods of the steady state (the response is a
-    # sinusoid at the drive's frequency there, so a force fit could not tell it apart)
-    y_eq = float(np.mean(traj.pos[sel][:-1] @ axis)) if driven else _equilibrium(traj, axis)
-    holder_y = float(np.dot(cfg.holder.pos, axis))
-    x = traj.pos @ axis - y_eq
-    v = traj.p @ axis / m
-    t = traj.t
-    T = period_from_crossings(t[sel], x[sel])
+    s_y, s_eq = cfg.spring.yield_stretch, osc.equilibrium_stretch
+    extra_measured["permanent_set"] = float(traj.L0[-1] - traj.L0[0])
+    extra_theory["permanent_set"] = theory.permanent_set(osc, s_y)
+    i_set = int(np.flatnonzero(np.diff(traj.L0))[-1]) + 1
+    traj = _after(traj, i_set)
+    shift = axis * (extra_theory["permanent_set"] or 0.0)
+    osc = replace(osc, L0=float(traj.L0[-1]), x0=-(s_y - s_eq), v0=0.0,
+                  equilibrium=tuple(np.asarray(osc.equilibrium) - shift))
+    return traj, osc
 
-    # energy about equilibrium: the engine's own energies, minus those at rest at equilibrium
-    rest = build.system(cfg)
-    rest.pos[1] = np.asarray(cfg.holder.pos) + axis * (y_eq - holder_y)
-    rest.p[:] = 0.0
-    rest.L0[:] = traj.L0[-1]
-    E_rest = physics.energies(rest).E
-    E_osc = traj.E - E_rest
 
-    measured: dict[str, float | None] = {
-        "period": T,
-        "frequency": 1 / T if T else None,
-        "angular_frequency": 2 * math.pi / T if T else None,
-        "equilibrium_stretch": float(holder_y - y_eq - traj.L0[-1]),
-    }
-    n = len(t)
-    t_th = np.linspace(0.0, t[-1], 20 * (n - 1) + 1)
-    if driven:
-        F0 = theory.drive_force_amplitude(cfg) * float(np.dot(
-            np.asarray(cfg.drive.direction) / np.linalg.norm(cfg.drive.direction), axis))
-        w = cfg.drive.omega
-        A = float(abs(theory.steady_amplitude(w, osc.omega0, osc.gamma, F0, m)))
-        xs = x[sel]
-        measured.update(amplitude=float((xs.max() - xs.min()) / 2),
-                        max_speed=float(np.abs(v[sel]).max()),
-                        max_acceleration=float(np.abs(traj.a[sel] @ axis).max()),
-                        energy=float(E_osc[sel].mean()))
-        # mean of 1/2 m v^2 + 1/2 k (x - y_holder)^2 over a cycle, x lagging the drive by delta
-        delta = math.atan2(2 * osc.gamma * w, osc.omega0 ** 2 - w ** 2)
-        As = cfg.drive.amplitude if cfg.drive.type == "support" else 0.0   # along the axis
-        th = {"period": 2 * math.pi / w, "amplitude": A, "max_speed": A * w,
-              "max_acceleration": A * w * w,
-              "energy": 0.25 * m * (A * w) ** 2
-              + 0.25 * cfg.spring.k * abs(A * complex(math.cos(delta), -math.sin(delta)) - As) ** 2}
+@dataclass
+class _Run:
+    """The run seen along the line of motion, about its equilibrium."""
+
+    traj: physics.Trajectory
+    osc: theory.Oscillator
+    sel: slice             # the steps measured: a driven run's steady state, else all
+    y_eq: float            # the equilibrium along the axis
+    holder_y: float
+    x: np.ndarray          # displacement from equilibrium along the axis
+    v: np.ndarray          # velocity along the axis
+    t: np.ndarray
+    E_osc: np.ndarray      # energy about equilibrium
+
+    @classmethod
+    def of(cls, cfg: Config, osc: theory.Oscillator, traj: physics.Trajectory) -> "_Run":
+        axis = np.asarray(osc.axis)
+        sel = slice(_steady_start(cfg, osc, traj.t), None) if cfg.driven else slice(None)
+        # driven: the mean over whole drive periods of the steady state (the response is a
+        # sinusoid at the drive's frequency there, so a force fit could not tell it apart)
+        y_eq = (float(np.mean(traj.pos[sel][:-1] @ axis)) if cfg.driven
+                else _equilibrium(traj, axis))
+        holder_y = float(np.dot(cfg.holder.pos, axis))
+        # energy about equilibrium: the engine's own energies, minus those at rest there
+        rest = build.system(cfg)
+        rest.pos[1] = np.asarray(cfg.holder.pos) + axis * (y_eq - holder_y)
+        rest.p[:] = 0.0
+        rest.L0[:] = traj.L0[-1]
+        E_rest = physics.energies(rest).E
+        return cls(traj, osc, sel, y_eq, holder_y, traj.pos @ axis - y_eq,
+                   traj.p @ axis / cfg.ball.m, traj.t, traj.E - E_rest)
+
+
+def _driven_motion(cfg: Config, run: _Run) -> tuple[dict, dict]:
+    """Measured amplitude, speed, acceleration and energy of the steady state, and theory's."""
+    osc, sel, m = run.osc, run.sel, cfg.ball.m
+    axis = np.asarray(osc.axis)
+    F0 = theory.drive_force_amplitude(cfg) * float(np.dot(
+        np.asarray(cfg.drive.direction) / np.linalg.norm(cfg.drive.direction), axis))
+    w = cfg.drive.omega
+    A = float(abs(theory.steady_amplitude(w, osc.omega0, osc.gamma, F0, m)))
+    xs = run.x[sel]
+    measured = dict(amplitude=float((xs.max() - xs.min()) / 2),
+                    max_speed=float(np.abs(run.v[sel]).max()),
+                    max_acceleration=float(np.abs(run.traj.a[sel] @ axis).max()),
+                    energy=float(run.E_osc[sel].mean()))
+    # mean of 1/2 m v^2 + 1/2 k (x - y_holder)^2 over a cycle, x lagging the drive by delta
+    delta = math.atan2(2 * osc.gamma * w, osc.omega0 ** 2 - w ** 2)
+    As = cfg.drive.amplitude if cfg.drive.type == "support" else 0.0   # along the axis
+    th = {"period": 2 * math.pi / w, "amplitude": A, "max_speed": A * w,
+          "max_acceleration": A * w * w,
+          "energy": 0.25 * m * (A * w) ** 2
+          + 0.25 * cfg.spring.k * abs(A * complex(math.cos(delta), -math.sin(delta)) - As) ** 2}
+    return measured, th
+
+
+def _free_motion(cfg: Config, run: _Run, T: float | None) -> tuple[dict, dict]:
+    """Measured amplitude, speed, acceleration and energy over the first period, and theory's."""
+    osc, t, traj, m = run.osc, run.t, run.traj, cfg.ball.m
+    t_th = np.linspace(0.0, t[-1], 20 * (len(t) - 1) + 1)
+    first = t <= (T if T else t[-1])
+    xt, vt = osc._xv(t_th)
+    at = -osc.omega0 ** 2 * xt - 2 * osc.gamma * vt
+    first_th = t_th <= osc.period
+    measured = dict(amplitude=float(np.abs(run.x[first]).max()),
+                    max_speed=float(np.linalg.norm(traj.p, axis=1).max() / m),
+                    max_acceleration=float(np.linalg.norm(traj.a, axis=1).max()),
+                    energy=float(run.E_osc[first].mean()))
+    th = {"period": osc.period, "amplitude": float(np.abs(xt[first_th]).max()),
+          "max_speed": float(np.abs(vt).max()), "max_acceleration": float(np.abs(at).max()),
+          "energy": osc.energy if not cfg.damping.b > 0 else float(
+              osc.mechanical_energy(t_th[first_th]).mean())}
+    return measured, th
+
+
+def _measure_damping(cfg: Config, run: _Run, th: dict, measured: dict, theory_: dict) -> None:
+    """The damping rate and the energy the drag took, measured and in theory."""
+    osc, traj, t, m = run.osc, run.traj, run.t, cfg.ball.m
+    if cfg.driven:
+        # over the steady state the drag dissipates 1/2 b (A w)^2 on average
+        # the drag's power b <v^2> is what the engine tallied as heat: b = dE_th / int v^2 dt
+        vs, ts = run.v[run.sel], t[run.sel]
+        v2dt = float(np.sum((vs[1:] ** 2 + vs[:-1] ** 2) / 2 * np.diff(ts)))
+        measured["damping_rate"] = float((traj.E_thermal[-1] - traj.E_thermal[run.sel][0])
+                                         / v2dt / (2 * m))
+        theory_["damping_rate"] = osc.gamma
+        window = t[-1] - t[run.sel][0]
+        measured["energy_lost"] = float(traj.E_thermal[-1] - traj.E_thermal[run.sel][0])
+        theory_["energy_lost"] = 0.5 * cfg.damping.b * (th["max_speed"]) ** 2 * window
     else:
-        first = t <= (T if T else t[-1])
-        xt, vt = osc._xv(t_th)
-        at = -osc.omega0 ** 2 * xt - 2 * osc.gamma * vt
-        first_th = t_th <= osc.period
-        measured.update(amplitude=float(np.abs(x[first]).max()),
-                        max_speed=float(np.linalg.norm(traj.p, axis=1).max() / m),
-                        max_acceleration=float(np.linalg.norm(traj.a, axis=1).max()),
-                        energy=float(E_osc[first].mean()))
-        th = {"period": osc.period, "amplitude": float(np.abs(xt[first_th]).max()),
-              "max_speed": float(np.abs(vt).max()), "max_acceleration": float(np.abs(at).max()),
-              "energy": osc.energy if not damped else float(
-                  osc.mechanical_energy(t_th[first_th]).mean())}
-    theory_: dict[str, float | None] = {
-        "period": th["period"] if math.isfinite(th["period"]) else None,
-        "equilibrium_stretch": osc.equilibrium_stretch,
-        **{k: th[k] for k in ("amplitude", "max_speed", "max_acceleration", "energy")},
-    }
-    P = theory_["period"]
-    theory_["frequency"] = 1 / P if P else None
-    theory_["angular_frequency"] = 2 * math.pi / P if P else None
+        measured["damping_rate"] = peak_decay_rate(t, run.x)
+        # a motion that does not oscillate: the same fit of ln|x| on the closed form
+        theory_["damping_rate"] = (osc.decay_rate if osc.omega_d > 0
+                                   else peak_decay_rate(t, osc.x(t)))
+        measured["energy_lost"] = float(traj.E_thermal[-1])
+        theory_["energy_lost"] = float(osc.energy - osc.mechanical_energy(t[-1]))
 
-    if damped:
-        if driven:
-            # over the steady state the drag dissipates 1/2 b (A w)^2 on average
-            # the drag's power b <v^2> is what the engine tallied as heat: b = dE_th / int v^2 dt
-            vs, ts = v[sel], t[sel]
-            v2dt = float(np.sum((vs[1:] ** 2 + vs[:-1] ** 2) / 2 * np.diff(ts)))
-            measured["damping_rate"] = float((traj.E_thermal[-1] - traj.E_thermal[sel][0])
-                                             / v2dt / (2 * m))
-            theory_["damping_rate"] = osc.gamma
-            window = t[-1] - t[sel][0]
-            measured["energy_lost"] = float(traj.E_thermal[-1] - traj.E_thermal[sel][0])
-            theory_["energy_lost"] = 0.5 * cfg.damping.b * (th["max_speed"]) ** 2 * window
-        else:
-            measured["damping_rate"] = peak_decay_rate(t, x)
-            # a motion that does not oscillate: the same fit of ln|x| on the closed form
-            theory_["damping_rate"] = (osc.decay_rate if osc.omega_d > 0
-                                       else peak_decay_rate(t, osc.x(t)))
-            measured["energy_lost"] = float(traj.E_thermal[-1])
-            theory_["energy_lost"] = float(osc.energy - osc.mechanical_energy(t[-1]))
 
-    measured.update(extra_measured)
-    theory_.update(extra_theory)
-    keys = KEYS + (DAMPED_KEYS if damped else ()) + tuple(extra_measured)
-    regime = "driven" if driven else osc.regime
+def _regime(cfg: Config, osc: theory.Oscillator, traj: physics.Trajectory, plastic: bool) -> str:
+    regime = "driven" if cfg.driven else osc.regime
     if cfg.spring.k3:
         regime += " (stiffening: theory linearised about equilibrium, k + 3 k3 s_eq^2)"
     if plastic:
         regime += f", after a permanent set at t = {traj.t0:.3g} s"
-    return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
-            "duration": float(traj.t[-1] + traj.t0), "regime": regime,
-            "measured": {k: measured.get(k) for k in keys},
-            "theory": {k: theory_.get(k) for k in keys}}
+    return regime
 
 
 def _after(traj: physics.Trajectory, i: int) -> physics.Trajectory:

@@ -165,6 +165,27 @@ class Plan:
 
 
 def plan_run(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
+    """What the config's scenario lets us measure, and the steps the run needs for it."""
+    what, needs, notes = _what_to_measure(cfg, geo)
+    run = _run_length(cfg, duration, needs, notes)
+    dt = cfg.physics.dt
+    steps = max(1, int(math.ceil(run / dt - 1e-9)))
+    if steps > MAX_STEPS:
+        raise UserError(f"{cfg.source}: measuring this needs {steps:,} steps of dt = {dt:g} s "
+                        f"(more than {MAX_STEPS:,}); use a smaller lattice or a larger dt")
+    plan = Plan(tuple(what), steps, steps * dt, notes=notes)
+    if "speed_of_sound" in what:
+        # enough for the pulse, its reflection coming back, and the figure
+        plan.pulse_steps = min(steps, int(math.ceil(2.2 * geo.crossing / dt)))
+    if "dispersion" in what:
+        w_max = float(geo.lat.dispersion(geo.modes()[1]).max())
+        plan.mode_stride = max(1, int(2 * math.pi / (w_max * dt * SAMPLES_PER_PERIOD)))
+    return plan
+
+
+def _what_to_measure(cfg: Config, geo: Geometry
+                     ) -> tuple[list[str], dict[str, tuple[float, str]], list[str]]:
+    """The quantities the scenario shows, the least run each needs (s, why), and notes."""
     src, lat = cfg.source, geo.lat
     kick, T0, F = cfg.start.kick, cfg.start.temperature, cfg.pull.force
     nx = geo.shape[0]
@@ -203,8 +224,14 @@ def plan_run(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
         raise UserError(f"{src}: nothing to measure: {why}; analyze measures the speed of "
                         "sound (a kick along x), the dispersion (a kicked or thermal chain), "
                         "Young's modulus (a pull) and equipartition (a temperature)")
+    return what, needs, early_notes
+
+
+def _run_length(cfg: Config, duration: float | None, needs: dict[str, tuple[float, str]],
+                notes: list[str]) -> float:
+    """The run's length: the asked one, lengthened (with a note) to what the measurements
+    need; an explicit ``--duration`` that is too short is refused."""
     asked = duration if duration is not None else cfg.render.duration
-    notes = early_notes
     run = asked
     if needs:
         key, (need, why) = max(needs.items(), key=lambda kv: kv[1][0])
@@ -216,19 +243,7 @@ def plan_run(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
             run = need
             notes.append(f"the run is lengthened from the config's {asked:g} s to {need:.3g} s "
                          f"for the {key.replace('_', ' ')} ({why})")
-    dt = cfg.physics.dt
-    steps = max(1, int(math.ceil(run / dt - 1e-9)))
-    if steps > MAX_STEPS:
-        raise UserError(f"{src}: measuring this needs {steps:,} steps of dt = {dt:g} s "
-                        f"(more than {MAX_STEPS:,}); use a smaller lattice or a larger dt")
-    plan = Plan(tuple(what), steps, steps * dt, notes=notes)
-    if "speed_of_sound" in what:
-        # enough for the pulse, its reflection coming back, and the figure
-        plan.pulse_steps = min(steps, int(math.ceil(2.2 * geo.crossing / dt)))
-    if "dispersion" in what:
-        w_max = float(lat.dispersion(geo.modes()[1]).max())
-        plan.mode_stride = max(1, int(2 * math.pi / (w_max * dt * SAMPLES_PER_PERIOD)))
-    return plan
+    return run
 
 
 # ---- the run -----------------------------------------------------------------------------
@@ -247,20 +262,32 @@ class Record:
     elongation: np.ndarray | None = None     # (R,) pulled face minus held face, less (nx-1) d
 
 
+def _layer_means(geo: Geometry):
+    """A function of per-atom values (N,) that gives their mean over each x layer's free
+    atoms (nx,)."""
+    nx = geo.shape[0]
+    free_grid = ~geo.grid_held
+    # layer means over free atoms: a (nx, N) averaging matrix, as a weight per atom
+    layer_of = np.unravel_index(np.arange(geo.lat.n_atoms), geo.shape)[0]
+    counts = np.array([free_grid[ix].sum() for ix in range(nx)], float)
+    w_layer = np.where(~geo.held, 1.0, 0.0) / np.maximum(counts[layer_of], 1)
+
+    def layers(values: np.ndarray) -> np.ndarray:
+        return np.bincount(layer_of, weights=values * w_layer, minlength=nx)
+
+    return layers
+
+
 def simulate(cfg: Config, geo: Geometry, plan: Plan) -> Record:
+    """Run the config's system for the plan's steps, recording what its measurements read."""
     s = build.system(cfg)
     lat = geo.lat
-    sites = lat.sites()
-    x0 = sites[:, 0]
+    x0 = lat.sites()[:, 0]
     dt = cfg.physics.dt
     rec = Record()
     grid = np.arange(lat.n_atoms).reshape(geo.shape)
-    free_grid = ~geo.grid_held
     nx = geo.shape[0]
-    # layer means over free atoms: a (nx, N) averaging matrix, as a weight per atom
-    layer_of = np.unravel_index(np.arange(lat.n_atoms), geo.shape)[0]
-    counts = np.array([free_grid[ix].sum() for ix in range(nx)], float)
-    w_layer = np.where(~geo.held, 1.0, 0.0) / np.maximum(counts[layer_of], 1)
+    layers = _layer_means(geo)
     want_pulse = "speed_of_sound" in plan.what
     want_modes = "dispersion" in plan.what
     want_energy = "temperature" in plan.what
@@ -283,10 +310,6 @@ def simulate(cfg: Config, geo: Geometry, plan: Plan) -> Record:
         rec.elongation = np.empty(R)
     free = geo.free
     m = lat.m
-
-    def layers(values: np.ndarray) -> np.ndarray:
-        return np.bincount(layer_of, weights=values * w_layer, minlength=nx)
-
     for i in range(plan.steps + 1):
         if i:
             physics.step(s, 1)

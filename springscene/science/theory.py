@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import UserError
 from ..settings import Config
 
 
@@ -177,8 +178,6 @@ def drive_force_amplitude(cfg: Config) -> float:
 
 def check_drive_along_motion(cfg: Config, command: str) -> None:
     """The closed forms are one-dimensional: the drive must act along the line of motion."""
-    from ..errors import UserError
-
     axis = np.asarray(Oscillator.from_config(cfg).axis)
     u = np.asarray(cfg.drive.direction, float)
     if abs(float(np.dot(u / np.linalg.norm(u), axis))) < 0.999:

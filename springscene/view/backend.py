@@ -62,7 +62,7 @@ def select(backend: str = "auto") -> str:
 
 def _quiet_vtk() -> None:
     """Keep VTK's warnings and log lines off stderr."""
-    from vtkmodules.vtkCommonCore import vtkLogger, vtkObject
+    from vtkmodules.vtkCommonCore import vtkLogger, vtkObject  # noqa: PLC0415  heavy: VTK
 
     vtkObject.GlobalWarningDisplayOff()
     vtkLogger.SetStderrVerbosity(vtkLogger.VERBOSITY_OFF)

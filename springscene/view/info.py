@@ -10,8 +10,8 @@ from . import backend
 
 def info(backend_name: str = "auto") -> dict[str, str]:
     chosen = backend.select(backend_name)
-    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (registers the OpenGL windows)
+    from vtkmodules.vtkRenderingCore import vtkRenderWindow, vtkRenderer  # noqa: PLC0415  heavy: VTK
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: PLC0415, F401  heavy: VTK; registers the OpenGL windows
 
     rw = vtkRenderWindow()
     rw.SetOffScreenRendering(1)

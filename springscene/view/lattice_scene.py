@@ -151,7 +151,7 @@ def display_unit(kind: str, high: float) -> tuple[str, float]:
 
 def colormap_table(name: str = COLORMAP, n: int = LUT_SIZE) -> np.ndarray:
     """The colour map as an (n, 3) uint8 table, the same colours the bar shows."""
-    import matplotlib  # noqa: PLC0415  heavy
+    import matplotlib  # noqa: PLC0415  heavy: matplotlib
 
     cmap = matplotlib.colormaps[name].resampled(n)
     return np.round(cmap(np.arange(n))[:, :3] * 255).astype(np.uint8)
@@ -210,16 +210,16 @@ class ColorBar:
     def render(cls, vmax: float, title: str, vertical: bool, text_color: str,
                size: tuple[int, int], x: int = 0, y: int = 0) -> "ColorBar":
         """Draw a bar from 0 to ``vmax`` (in the unit of ``title``) with matplotlib."""
-        from matplotlib import colors  # noqa: PLC0415  heavy
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.cm import ScalarMappable  # noqa: PLC0415  heavy
-        from matplotlib.figure import Figure
+        from matplotlib import colors  # noqa: PLC0415  heavy: matplotlib
+        from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415  heavy: matplotlib
+        from matplotlib.cm import ScalarMappable  # noqa: PLC0415  heavy: matplotlib
+        from matplotlib.figure import Figure  # noqa: PLC0415  heavy: matplotlib
 
         w, h = size
         fig = Figure(figsize=(w / BAR_DPI, h / BAR_DPI), dpi=BAR_DPI)
         fig.patch.set_alpha(0.0)
         canvas = FigureCanvasAgg(fig)
-        import matplotlib  # noqa: PLC0415  heavy
+        import matplotlib  # noqa: PLC0415  heavy: matplotlib
 
         cmap = matplotlib.colormaps[COLORMAP].resampled(LUT_SIZE)
         mappable = ScalarMappable(norm=colors.Normalize(0.0, vmax), cmap=cmap)
@@ -275,8 +275,7 @@ class LatticeScene(SceneBase):
         if color_by != "none" and color_range is None:
             raise ValueError(f"colouring by {color_by} needs a color_range (color_scale)")
         pl = self._open(canvas, camera, antialias, backend_name)
-        import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
-        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK  # noqa: PLC0415  heavy
+        import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
 
         lat = lattice
         self.lattice = lat
@@ -300,17 +299,25 @@ class LatticeScene(SceneBase):
             self.color_range = (lo, hi)
             self.unit = display_unit(self.color_by, hi)
 
-        # atoms: one point cloud, each point a sphere imposter
+        self._make_atoms(pv, system, atom.color)
+        self._make_bonds(pv, system, bond, d)
+        add_title(pl, canvas)
+        self.update(system)
+        self.color_bar = self._make_color_bar() if self.color_by != "none" else None
+
+    def _make_atoms(self, pv, system: System, color: Color) -> None:
+        """The atoms: one point cloud, each point a sphere imposter."""
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy: VTK
+
         self.atoms = pv.PolyData(np.asarray(system.pos, np.float32))
         rgb = np.empty((len(system.pos), 3), np.uint8)
-        rgb[:] = _to_uint8(atom.color)
+        rgb[:] = _to_uint8(color)
         rgb[self.held] = _to_uint8(self.held_color)
         self.atoms.point_data["rgb"] = rgb
         self.atoms.GetPointData().SetActiveScalars("rgb")
         self._atom_xyz = vtk_to_numpy(self.atoms.GetPoints().GetData())
         self._atom_rgb = vtk_to_numpy(self.atoms.GetPointData().GetArray("rgb"))
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy  # noqa: PLC0415  heavy
-
         # held atoms smaller: the gray shell of a crystal held at its outer layer lets the
         # coloured atoms inside be seen
         self.radii = np.where(self.held, HELD_RADIUS * self.atom_radius, self.atom_radius)
@@ -320,11 +327,11 @@ class LatticeScene(SceneBase):
         mapper.SetScaleArray("radius")
         mapper.SetColorModeToDirectScalars()
         mapper.ScalarVisibilityOn()
-        self.atom_actor = self._add_actor(mapper, atom.color, "atoms")
+        self.atom_actor = self._add_actor(mapper, color, "atoms")
 
-        # bonds: one object
-        self.bond_style = bond_style(bond.style, len(self._i))
-        b = bond
+    def _make_bonds(self, pv, system: System, b: BondCfg, d: float) -> None:
+        """The bonds: one object, in the style ``[bond] style`` resolves to."""
+        self.bond_style = bond_style(b.style, len(self._i))
         if self.bond_style == "helix":
             radius = b.radius if b.radius is not None else HELIX_RADIUS * d
             thickness = b.thickness if b.thickness is not None else HELIX_THICKNESS * d
@@ -338,12 +345,8 @@ class LatticeScene(SceneBase):
         self._place_camera(system)      # the first view sizes the helices' polygons
         getattr(self, f"_make_{self.bond_style}")(pv, b, radius, system)
 
-        add_title(pl, canvas)
-        self.update(system)
-        self.color_bar = self._make_color_bar() if self.color_by != "none" else None
-
     def _add_actor(self, mapper, color, name: str):
-        from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy
+        from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy: VTK
 
         actor = vtkActor()
         actor.SetMapper(mapper)
@@ -354,8 +357,8 @@ class LatticeScene(SceneBase):
     # -- the bonds, by style -----------------------------------------------------------
 
     def _make_helix(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
         wire = self._bond_extent - radius
         ppm = self._pixels_per_metre(system)
@@ -378,8 +381,8 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_cylinder(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLStickMapper
+        from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLStickMapper  # noqa: PLC0415  heavy: VTK
 
         n = len(self._i)
         sticks = pv.PolyData(np.zeros((n, 3), np.float32))
@@ -402,9 +405,9 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_line(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData  # noqa: PLC0415  heavy
-        from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray
-        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData  # noqa: PLC0415  heavy: VTK
+        from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray  # noqa: PLC0415  heavy: VTK
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
         lines = vtkPolyData()
         lines.SetPoints(self.atoms.GetPoints())          # the atoms' own points: no update

@@ -63,8 +63,8 @@ SVG_METADATA = {"Date": None, "Creator": None}
 @contextlib.contextmanager
 def style() -> Iterator[None]:
     """Matplotlib's defaults plus :data:`STYLE`, whatever the user's matplotlibrc says."""
-    import matplotlib  # noqa: PLC0415  heavy: matplotlib, only when drawing
-    from cycler import cycler  # noqa: PLC0415  heavy, matplotlib's
+    import matplotlib  # noqa: PLC0415  heavy: matplotlib
+    from cycler import cycler  # noqa: PLC0415  heavy: matplotlib
 
     with matplotlib.rc_context():
         matplotlib.rcdefaults()
@@ -89,8 +89,8 @@ def figure_image(fig) -> np.ndarray:
 @contextlib.contextmanager
 def panel_style(font_size: float) -> Iterator[None]:
     """matplotlib's defaults with ``font_size`` (pt), for the panels drawn into videos."""
-    from matplotlib import rc_context  # noqa: PLC0415  heavy: matplotlib, only when drawing
-    from matplotlib import style as mpl_style  # noqa: PLC0415  heavy, as above
+    from matplotlib import rc_context  # noqa: PLC0415  heavy: matplotlib
+    from matplotlib import style as mpl_style  # noqa: PLC0415  heavy: matplotlib
 
     with mpl_style.context("default"), rc_context({"font.size": font_size}):
         yield
@@ -98,8 +98,8 @@ def panel_style(font_size: float) -> Iterator[None]:
 
 def agg_figure(width_px: int, height_px: int, dpi: int = DPI, **kwargs):
     """An Agg figure of ``width_px`` x ``height_px`` pixels at ``dpi`` (no pyplot)."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415  heavy
-    from matplotlib.figure import Figure  # noqa: PLC0415  heavy
+    from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415  heavy: matplotlib
+    from matplotlib.figure import Figure  # noqa: PLC0415  heavy: matplotlib
 
     fig = Figure(figsize=(width_px / dpi, height_px / dpi), dpi=dpi, **kwargs)
     FigureCanvasAgg(fig)

@@ -77,7 +77,7 @@ def new_plotter(canvas: SceneCfg, antialias: bool = True):
     4x multisampling when ``antialias``. The backend must have been chosen
     (:func:`springscene.view.backend.select`).
     """
-    import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
+    import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
 
     w, h = canvas.width, canvas.height
     pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
@@ -209,7 +209,7 @@ class Scene(SceneBase):
                  holder: HolderCfg, spring: SpringCfg, ball: BallCfg, antialias: bool = True,
                  backend_name: str = "auto") -> None:
         pl = self._open(canvas, camera, antialias, backend_name)
-        import pyvista as pv  # noqa: PLC0415  heavy: VTK and pyvista, once a backend is chosen
+        import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
 
         self.ball_radius = ball.radius
 
