@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render figures matter test bench baselines clean system-deps
+.PHONY: setup render figures matter test lint bench baselines clean system-deps
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -51,6 +51,12 @@ matter: setup
 test: setup
 	$(BIN)/python -m pytest
 
+# the layers (docs/architecture.md): import-linter's contracts and ruff's import rules;
+# tests/test_architecture.py runs the same in `make test`
+lint: setup
+	$(BIN)/lint-imports
+	$(BIN)/ruff check springscene
+
 bench: setup
 	$(BIN)/python benchmarks/bench_render.py
 	$(BIN)/python benchmarks/bench_physics.py
@@ -59,7 +65,7 @@ bench: setup
 	$(BIN)/python benchmarks/bench_matter_render.py
 
 baselines: setup
-	$(BIN)/python -m pytest tests/test_render.py tests/test_figures.py tests/test_overlay.py tests/test_lattice_scene.py --regen-baselines
+	$(BIN)/python -m pytest tests/view tests/figures tests/vpython --regen-baselines
 
 clean:
 	rm -rf $(VENV) build *.egg-info renders/wiki/oscillation.mp4 renders/wiki/still.png

@@ -31,12 +31,12 @@ import time
 import tracemalloc
 from pathlib import Path
 
-import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from springscene import config, physics  # noqa: E402
+from springscene import build, config  # noqa: E402
+from springscene.model import physics  # noqa: E402
 
 N = 30
 STEPS = 40

@@ -6,7 +6,7 @@ physics to the frame's time, update the scene, render and read back (no encoding
 Against baselines drawn in the same run, with the same lights, material, colours
 and camera:
 
-- imposters: :class:`springscene.lattice_scene.LatticeScene`: one point cloud of
+- imposters: :class:`springscene.view.lattice_scene.LatticeScene`: one point cloud of
   sphere imposters and one of stick imposters, arrays rewritten in place;
 - merged mesh: one mesh of 1000 tessellated 30 x 30 spheres (the page's ball) and
   one of 2700 16-sided cylinder tubes, every vertex and normal rewritten in place
@@ -30,9 +30,11 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from springscene import backend, config, physics, render, scene  # noqa: E402
-from springscene.geometry import frames_from_up, perpendicular_ups  # noqa: E402
-from springscene import lattice_scene as ls  # noqa: E402
+from springscene import build, config, render  # noqa: E402
+from springscene.model import physics  # noqa: E402
+from springscene.view import backend, scene  # noqa: E402
+from springscene.view.geometry import frames_from_up, perpendicular_ups  # noqa: E402
+from springscene.view import lattice_scene as ls  # noqa: E402
 
 ROUNDS = 3
 FRAMES = {"imposters": 20, "imposters draft": 20, "merged mesh": 5,

@@ -21,7 +21,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from springscene import config, integrators, physics, sweep  # noqa: E402
+from springscene import build, config  # noqa: E402
+from springscene.model import integrators, physics  # noqa: E402
+from springscene.science import sweep  # noqa: E402
 
 N_FREQ = 1000
 PERIODS = 200

@@ -28,8 +28,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from springscene import config, physics, render  # noqa: E402
-from springscene.geometry import HelixFrame, HelixTube  # noqa: E402
+from springscene import build, config, render  # noqa: E402
+from springscene.model import physics  # noqa: E402
+from springscene.view.geometry import HelixFrame, HelixTube  # noqa: E402
 from springscene.outputs import VideoWriter  # noqa: E402
 
 SECONDS = 3.0
@@ -41,7 +42,6 @@ def _frames(cfg) -> int:
 
 
 def floor(cfg, out: Path) -> float:
-    from springscene.scene import Scene
 
     n = _frames(cfg)
     with render.make_scene(cfg, build.system(cfg)) as scene, VideoWriter(out, cfg.render.fps,
@@ -57,7 +57,6 @@ def naive(cfg, out: Path) -> float:
     """The wiki loop translated line by line to PyVista."""
     import pyvista as pv
 
-    from springscene.scene import Scene
 
     n = _frames(cfg)
     k, L0, m, dt = cfg.spring.k, cfg.spring.L0, cfg.ball.m, cfg.physics.dt

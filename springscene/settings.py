@@ -11,6 +11,7 @@ import math
 from dataclasses import dataclass, field
 
 from .colors import Color
+from .model import integrators
 
 Vec = tuple[float, float, float]
 
@@ -38,7 +39,7 @@ class CameraCfg:
 class PhysicsCfg:
     dt: float = 0.01
     g: Vec = (0.0, -9.8, 0.0)
-    integrator: str = "euler-cromer"
+    integrator: str = integrators.DEFAULT
 
 
 @dataclass(frozen=True)

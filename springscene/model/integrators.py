@@ -95,6 +95,12 @@ def rk4(x, p, m, t, h, f: Force, beta=None):
 EULER_MAX_GROWTH_PER_PERIOD = 2.0
 
 
+def leapfrog_frequency(omega, dt: float) -> np.ndarray:
+    """The frequency Euler-Cromer and Verlet run a linear mode of frequency omega at:
+    (2/dt) asin(omega dt / 2)."""
+    return 2.0 / dt * np.arcsin(np.clip(np.asarray(omega) * dt / 2, -1, 1))
+
+
 @dataclass(frozen=True)
 class Integrator:
     """Everything said about one integrator, in one place.
@@ -102,7 +108,8 @@ class Integrator:
     ``name`` is the config's and the flag's word; ``label`` the figures' and tables';
     ``order`` its global order of accuracy; ``step`` the function; ``omega_dt_limit``
     the largest omega*dt at which an undamped mode stays bounded (None: never, Euler
-    amplifies every mode); ``rule`` the words a refusal uses.
+    amplifies every mode); ``rule`` the words a refusal uses; ``mode_frequency(omega,
+    dt)`` the frequency it runs an undamped linear mode at, where known in closed form.
     """
 
     name: str
@@ -111,15 +118,18 @@ class Integrator:
     step: Callable
     omega_dt_limit: float | None
     rule: str
+    mode_frequency: Callable[[np.ndarray, float], np.ndarray] | None = None
 
 
 INTEGRATORS: dict[str, Integrator] = {i.name: i for i in (
     Integrator("euler", "Euler", 1, euler, None,
                f"grows the amplitude more than {EULER_MAX_GROWTH_PER_PERIOD:g}x per period"),
-    Integrator("euler-cromer", "Euler-Cromer", 1, euler_cromer, 2.0, "needs omega*dt < 2"),
-    Integrator("verlet", "Verlet", 2, verlet, 2.0, "needs omega*dt < 2"),
+    Integrator("euler-cromer", "Euler-Cromer", 1, euler_cromer, 2.0, "needs omega*dt < 2",
+               leapfrog_frequency),
+    Integrator("verlet", "Verlet", 2, verlet, 2.0, "needs omega*dt < 2", leapfrog_frequency),
     Integrator("rk4", "RK4", 4, rk4, 2 * math.sqrt(2), "needs omega*dt < 2.83"),
 )}
+DEFAULT = "euler-cromer"      # the page's
 NAMES = tuple(INTEGRATORS)
 STEPPERS = {name: i.step for name, i in INTEGRATORS.items()}
 ORDER = {name: i.order for name, i in INTEGRATORS.items()}

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import physics
+from . import integrators, physics
 from .constants import AVOGADRO, BOLTZMANN
 
 HELIX_MAX_BONDS = 300     # style "auto": helices up to this many bonds, cylinders beyond
@@ -142,7 +142,7 @@ def thermal_momenta(m: float, temperature: float, free: np.ndarray, seed: int,
 
 def build(lat: Lattice, *, kick=(0.0, 0.0, 0.0), temperature: float = 0.0, seed: int = 0,
           pull: float = 0.0, g=(0.0, 0.0, 0.0), dt: float, b: float = 0.0,
-          integrator: str = "euler-cromer") -> physics.System:
+          integrator: str = integrators.DEFAULT) -> physics.System:
     """The physics system of a lattice: grid nodes and bonds; atoms at rest on their sites
     except for a ``kick`` (m/s) to the first free layer or thermal momenta at
     ``temperature`` (K, from ``seed``); a ``pull`` (N, along +x) shared by the last face."""

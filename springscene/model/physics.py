@@ -147,7 +147,7 @@ class System:
     k3: np.ndarray | float = 0.0
     yield_stretch: np.ndarray | float = np.inf
     drive: Drive | None = None
-    integrator: str = "euler-cromer"
+    integrator: str = integrators.DEFAULT
     F_ext: np.ndarray | None = None
     grid: tuple[int, int, int] | None = None
     t: float = 0.0

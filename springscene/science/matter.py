@@ -75,6 +75,7 @@ import numpy as np
 
 from ..errors import UserError
 from ..model.constants import BOLTZMANN
+from ..model.integrators import INTEGRATORS
 from ..settings import Config
 from ..units import percent
 from .. import config
@@ -216,10 +217,10 @@ def mode_frequency(t: np.ndarray, a: np.ndarray, pad: int = ZERO_PAD
 
 
 def integrator_frequency(name: str, omega: np.ndarray, dt: float) -> np.ndarray | None:
-    """The frequency Euler-Cromer or Verlet runs a linear mode at: (2/dt) asin(omega dt/2)."""
-    if name not in ("euler-cromer", "verlet"):
-        return None
-    return 2.0 / dt * np.arcsin(np.clip(omega * dt / 2, -1, 1))
+    """The frequency integrator ``name`` runs a linear mode at, where known (Euler-Cromer
+    and Verlet: (2/dt) asin(omega dt/2)); None otherwise."""
+    shifted = INTEGRATORS[name].mode_frequency
+    return None if shifted is None else shifted(omega, dt)
 
 
 def dispersion(cfg: Config, geo: Geometry, rec: Record) -> dict:
