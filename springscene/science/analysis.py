@@ -25,10 +25,9 @@ import numpy as np
 
 from .. import build, config
 from ..model import physics, timeline
-from . import theory
+from . import tables, theory
 from .sweep import check_sweepable
 from ..settings import Config
-from ..units import percent
 from ..errors import UserError
 
 MIN_STEPS_PER_PERIOD = 12
@@ -303,15 +302,8 @@ def table(result: dict) -> str:
     """A readable terminal table: quantity, measured, theory, difference."""
     lines = [f"{result['config']}: {result['regime']}, {result['integrator']}, "
              f"dt = {result['dt']:g} s, {result['duration']:g} s simulated",
-             f"{'quantity':<22}{'measured':>14}{'theory':>14}{'difference':>12}  unit"]
+             tables.header(22, 14)]
     for key, meas in result["measured"].items():
-        th = result["theory"][key]
-        diff = ""
-        if meas is not None and th:
-            diff = percent((meas - th) / abs(th))
-        lines.append(f"{key:<22}{_num(meas):>14}{_num(th):>14}{diff:>12}  {UNITS[key]}")
+        lines.append(tables.row(key, meas, result["theory"][key], UNITS[key], label_width=22,
+                                measured_width=14))
     return "\n".join(lines)
-
-
-def _num(x: float | None) -> str:
-    return "—" if x is None else f"{x:.6g}"

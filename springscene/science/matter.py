@@ -77,8 +77,8 @@ from ..errors import UserError
 from ..model.constants import BOLTZMANN
 from ..model.integrators import INTEGRATORS
 from ..settings import Config
-from ..units import percent
 from .. import config
+from . import tables
 from .lattice_run import THERMAL_BLOCKS, Geometry, Record, plan_run, simulate
 
 AI_0 = 0.355028053887817239          # Ai(0)
@@ -434,16 +434,8 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
 
 # ---- the table ---------------------------------------------------------------------------
 
-def _num(x: float | None) -> str:
-    return "—" if x is None else f"{x:.6g}"
-
-
 def _row(label: str, meas, th, unit: str, err=None) -> str:
-    diff = ""
-    if meas is not None and th:
-        diff = percent((meas - th) / abs(th))
-    m = _num(meas) + (f" ± {err:.2g}" if err is not None else "")
-    return f"{label:<30}{m:>22}{_num(th):>14}{diff:>12}  {unit}"
+    return tables.row(label, meas, th, unit, error=err, label_width=30, measured_width=22)
 
 
 def table(result: dict) -> str:
@@ -455,7 +447,7 @@ def table(result: dict) -> str:
     lines = [f"{result['config']}: {what} ({lat['free_atoms']} free; d = {lat['spacing']:.4g} m, "
              f"m = {lat['mass']:.4g} kg, k = {lat['k']:g} N/m), {result['integrator']}, "
              f"dt = {result['dt']:g} s, {result['duration']:.4g} s simulated",
-             f"{'quantity':<30}{'measured':>22}{'theory':>14}{'difference':>12}  unit"]
+             tables.header(30, 22)]
     if "speed_of_sound" in result:
         s = result["speed_of_sound"]
         lines.append(_row(f"speed of sound ({s['atoms']} atoms)", s["measured"], s["theory"],
