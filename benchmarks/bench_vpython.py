@@ -45,8 +45,7 @@ def per_object() -> float:
     """One actor per sphere; each frame moves every actor."""
     import pyvista as pv
 
-    from springscene.vpython.draw import MULTI_SAMPLES
-    from springscene.scene import grab
+    from springscene.view.scene import MULTI_SAMPLES, grab
     from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 
     pl = pv.Plotter(off_screen=True, window_size=(640, 400))
@@ -113,7 +112,7 @@ def wiki_render(out: Path) -> float:
 
 
 def main() -> None:
-    from springscene import backend
+    from springscene.view import backend
 
     backend.select("auto")
     best = {name: float("inf") for name in ("per-object", "batched, 30 x 30", "batched",

@@ -105,24 +105,17 @@ def dispersion_figure(result: dict):
     geo = result["_geometry"]
     lat = geo.lat
     D = result["dispersion"]
-    cfg = result["_config"]
     q = np.array(D["q"])
     meas = np.array(D["measured"])
-    th = np.array(D["theory"])
     omega, spectra = D["_spectrum"]
     lf, lp = next(((f, p) for f, p in reversed(prefixes("", "z")) if math.pi / lat.d * f >= 1),
                   (1.0, ""))
     qf = 1 / lf
     w_top = 1.12 * 2 * lat.omega0
     wf, wl = power_scale(w_top)
-    # the spectra, pooled (max) onto a coarse frequency grid for the picture
-    rows = 360
-    edges = np.searchsorted(omega, np.linspace(0, w_top, rows + 1))
-    pooled = np.array([[spec[a:max(b, a + 1)].max() for a, b in zip(edges[:-1], edges[1:])]
-                       for spec in spectra]).T
+    pooled = _pooled_spectra(omega, spectra, w_top)
     dq = q[1] - q[0] if len(q) > 1 else q[0]
     q_curve = np.linspace(0, math.pi / lat.d, 400)
-    integ = D.get("integrator_theory")
     with style():
         fig = new_figure(620)
         top, bottom = fig.subplots(2, 1, height_ratios=[3, 1.1])
@@ -147,20 +140,38 @@ def dispersion_figure(result: dict):
         top.grid(False)
         top.set_title(f"Dispersion of a {geo.shape[0]}-atom chain: k = {lat.k:g} N/m, "
                       f"m = {lat.m:.3g} kg, d = {lat.d / lf:.3g} {lp}m")
-        rel = 100 * (meas / th - 1)
-        bottom.axhline(0, color=GREY, lw=0.8)
-        if integ is not None:
-            bottom.plot(q / qf, 100 * (np.array(integ) / th - 1), "-", color=BLUE, lw=1.1,
-                        label=f"{cfg.physics.integrator}'s own shift, (2/dt) asin(ω dt/2)")
-        bottom.plot(q / qf, rel, "o", ms=3, color=VERMILLION, mec="none",
-                    label=f"measured (largest {100 * D['max_relative_error']:.3f} %)")
-        span = max(np.abs(rel).max(), 0.01) * 1.6
-        bottom.set_ylim(-span, span)
-        bottom.set_xlim(top.get_xlim())
-        bottom.set_xlabel(f"wavenumber q ({lp}m$^{{-1}}$)" if lp else "wavenumber q (m$^{-1}$)")
-        bottom.set_ylabel("error (%)")
-        bottom.legend(loc="lower right", fontsize=9, ncol=2)
+        _dispersion_errors(bottom, D, q / qf, result["_config"].physics.integrator, lp,
+                           top.get_xlim())
     return fig
+
+
+def _pooled_spectra(omega: np.ndarray, spectra, w_top: float, rows: int = 360) -> np.ndarray:
+    """The modes' spectra, pooled (max) onto a coarse frequency grid from 0 to ``w_top``
+    for the picture: one column per mode, ``rows`` rows."""
+    edges = np.searchsorted(omega, np.linspace(0, w_top, rows + 1))
+    return np.array([[spec[a:max(b, a + 1)].max() for a, b in zip(edges[:-1], edges[1:])]
+                     for spec in spectra]).T
+
+
+def _dispersion_errors(ax, D: dict, x: np.ndarray, integrator: str, lp: str,
+                       xlim: tuple[float, float]) -> None:
+    """The bottom of :func:`dispersion_figure`: each mode's relative error (%) at ``x``
+    (the wavenumbers as shown, in 1/``lp``m), and the integrator's own frequency shift."""
+    th = np.array(D["theory"])
+    rel = 100 * (np.array(D["measured"]) / th - 1)
+    integ = D.get("integrator_theory")
+    ax.axhline(0, color=GREY, lw=0.8)
+    if integ is not None:
+        ax.plot(x, 100 * (np.array(integ) / th - 1), "-", color=BLUE, lw=1.1,
+                label=f"{integrator}'s own shift, (2/dt) asin(ω dt/2)")
+    ax.plot(x, rel, "o", ms=3, color=VERMILLION, mec="none",
+            label=f"measured (largest {100 * D['max_relative_error']:.3f} %)")
+    span = max(np.abs(rel).max(), 0.01) * 1.6
+    ax.set_ylim(-span, span)
+    ax.set_xlim(xlim)
+    ax.set_xlabel(f"wavenumber q ({lp}m$^{{-1}}$)" if lp else "wavenumber q (m$^{-1}$)")
+    ax.set_ylabel("error (%)")
+    ax.legend(loc="lower right", fontsize=9, ncol=2)
 
 
 def thermal_figure(result: dict):
@@ -220,7 +231,6 @@ def pull_figure(result: dict):
         ax.set_title(f"Young's modulus: Y = {Y['measured'] / 1e9:.4g} GPa measured, "
                      f"k/d = {Y['theory'] / 1e9:.4g} GPa ({_pct(Y['measured'] / Y['theory'] - 1)})")
     return fig
-
 
 
 def make_figures(cfg: Config, out_dir: str | Path) -> list[Path]:

@@ -5,26 +5,43 @@ program with this package standing in for ``vpython`` (and ``visual``). The name
 are VPython's: ``vector``, ``sphere``, ``box``, ``helix``, ``scene``, ``rate``,
 ``graph``, ``gcurve``, ``color`` and the rest; see :data:`__all__`.
 
-Modules: :mod:`.vector` (vectors), :mod:`.vmath` (the math names VPython
-re-exports), :mod:`.objects` and :mod:`.curves` (the 3D objects as data),
-:mod:`.canvas` (scene, camera, colours), :mod:`.graph` (graphs), :mod:`.widgets`
-(controls, with no user), :mod:`.runtime` (the program clock), :mod:`.shapes`
-and :mod:`.draw` (meshes and off-screen drawing), :mod:`.runner` (a program to a
-video) and :mod:`.page` (the page VPython would show).
+Modules, each importing only those listed before it:
+
+- :mod:`.vector` (vectors), :mod:`.vmath` (the math names VPython re-exports),
+  :mod:`.runtime` (the program clock), :mod:`.widgets` (controls, with no user),
+  :mod:`.checks` (vector arguments, unsupported features);
+- :mod:`.canvas` (scene, camera, lights, colours);
+- the 3D objects as data: :mod:`.base` (what all share), :mod:`.curves` (curve,
+  points), :mod:`.objects` (``standardAttributes``, trails), :mod:`.solids` (sphere,
+  box, ...), :mod:`.labels` (label);
+- meshes and off-screen drawing: :mod:`.placement` (frames, placing copies),
+  :mod:`.shape_sizes` (VPython's size rules), :mod:`.shapes` (the meshes of each
+  kind), :mod:`.draw` (the renderer), then :mod:`.compounds` (compound, which
+  takes its parts' meshes);
+- graphs: :mod:`.graph` (the graphs and plotted points), :mod:`.graph_layout` (one
+  graph on matplotlib axes), :mod:`.graph_images` (graphs as pictures);
+- :mod:`.page` (the page VPython would show) and :mod:`.runner` (a program to a
+  video).
 """
 
 from __future__ import annotations
 
 from . import vmath
-from .canvas import canvas, color
+from .canvas import canvas, color, distant_light, local_light
+from .checks import UnsupportedError
+from .compounds import compound
 from .curves import curve, points
 from .graph import gcurve, gdots, ghbars, graph, gvbars
-from .objects import (UnsupportedError, arrow, box, compound, cone, cylinder, distant_light,
-                      ellipsoid, helix, label, local_light, pyramid, ring, simple_sphere, sphere)
+from .graph import reset as _reset_graphs
+from .graph_images import reset as _forget_graph_figures
+from .labels import label
 from .runtime import rate, sleep
+from .solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring, simple_sphere,
+                     sphere)
 from .vector import (adjust_axis, adjust_up, comp, cross, diff_angle, dot, hat, mag, mag2,
                      norm, object_rotate, proj, rotate, vec, vector)
 from .widgets import button, checkbox, menu, radio, slider, winput, wtext
+from .widgets import reset as _reset_widgets
 
 globals().update(vmath.NAMES)
 
@@ -73,13 +90,11 @@ def get_library(*args, **kwargs) -> None:
 
 def reset() -> None:
     """Forget every canvas, graph and control, and make a fresh default ``scene``."""
-    from .graph import reset as reset_graphs
-    from .widgets import reset as reset_widgets
-
     global scene
     canvas._reset()
-    reset_graphs()
-    reset_widgets()
+    _reset_graphs()
+    _forget_graph_figures()
+    _reset_widgets()
     scene = canvas()
 
 

@@ -1,9 +1,15 @@
-"""VPython's ``canvas`` (the ``scene``), its camera, and the ``color`` names.
+"""VPython's ``canvas`` (the ``scene``), its camera, its lights, and the ``color`` names.
 
 A canvas holds its objects, lights and view settings with VPython 7's defaults
 (``shared/vpython-reference.md``): 640 x 400, black, ambient 0.2, two distant
-lights, center (0,0,0), forward (0,0,-1), fov pi/3, autoscale on. Setting
+lights (:data:`springscene.view.scene.LIGHTS`, the lights springscene's own scene
+has), center (0,0,0), forward (0,0,-1), fov pi/3, autoscale on. Setting
 ``range``, ``camera.pos`` or ``camera.axis`` turns autoscale off, as VPython does.
+
+The lights (``distant_light``, ``local_light``) live here with the canvas: they are
+the canvas's (``scene.lights``), not objects drawn on it, and every canvas is made
+with its default two. The canvas knows which one is current
+(:meth:`canvas.get_selected`), where objects made without ``canvas=`` go.
 
 Interaction needs a user, and there is none: ``bind`` records nothing to call,
 ``waitfor``/``pause`` return at once, and each is noted on stderr by the runner.
@@ -14,8 +20,9 @@ from __future__ import annotations
 import colorsys
 import math
 
-from . import widgets
-from .objects import _vec, distant_light
+from ..view.scene import LIGHTS
+from . import runtime, widgets
+from .checks import _vec
 from .vector import vector
 
 
@@ -192,9 +199,9 @@ class canvas:
         self._autoscaled_range = None       # the renderer's last autoscale result
         canvas._all.append(self)
         canvas._selected = self
-        distant_light(direction=vector(0.22, 0.44, 0.88), color=vector(0.8, 0.8, 0.8), canvas=self)
-        distant_light(direction=vector(-0.88, -0.22, -0.44), color=vector(0.3, 0.3, 0.3),
-                      canvas=self)
+        for direction, brightness in LIGHTS:
+            distant_light(direction=vector(*direction),
+                          color=vector(brightness, brightness, brightness), canvas=self)
         for name, value in args.items():
             if name in ("pixel_to_world", "objects"):
                 raise AttributeError(f"canvas: {name} cannot be set")
@@ -319,15 +326,11 @@ class canvas:
 
     def waitfor(self, events: str, *args) -> _Event:
         """No user: the event comes one video frame later (so a loop of waits still ends)."""
-        from . import runtime
-
         widgets.skipped(f"scene.waitfor({events!r}): returned after one frame")
         runtime.wait()
         return _Event(self, events.split()[0] if events.split() else events)
 
     def pause(self, *args) -> _Event:
-        from . import runtime
-
         widgets.skipped("scene.pause(): returned after one frame")
         runtime.wait()
         return _Event(self, "click")
@@ -338,8 +341,6 @@ class canvas:
 
     def capture(self, filename: str, *args) -> None:
         """Save the canvas as ``filename`` (.png added) beside the output, at this moment."""
-        from . import runtime
-
         name = str(filename)
         if not name.lower().endswith(".png"):
             name += ".png"
@@ -347,3 +348,72 @@ class canvas:
 
     def pixel_to_world(self, pixels: float) -> float:
         return 2 * self._range_now() * pixels / min(self.width, self.height)
+
+
+# -- lights ----------------------------------------------------------------------------
+
+class _Light:
+    """A light of a canvas (in its ``lights``, not among its objects)."""
+
+    _kind = "light"
+
+    def __init__(self, **args) -> None:
+        self._color = _vec(args.pop("color", vector(1, 1, 1)), "color")
+        self._visible = bool(args.pop("visible", True))
+        self._read(args)
+        cv = args.pop("canvas", None)
+        self._canvas = cv if cv is not None else canvas.get_selected()
+        self._dirty = True
+        self._canvas.lights.append(self)
+        for name, value in args.items():
+            setattr(self, name, value)
+
+    def _read(self, args: dict) -> None:
+        raise NotImplementedError
+
+    color = property(lambda self: self._color,
+                     lambda self, v: setattr(self, "_color", _vec(v, "color")))
+
+    @property
+    def canvas(self) -> canvas:
+        return self._canvas
+
+    @canvas.setter
+    def canvas(self, value) -> None:
+        raise AttributeError("canvas cannot be modified")
+
+    @property
+    def visible(self) -> bool:
+        return self._visible
+
+    @visible.setter
+    def visible(self, value) -> None:
+        self._visible = bool(value)
+        self._dirty = True
+
+    def delete(self) -> None:
+        if self in self._canvas.lights:
+            self._canvas.lights.remove(self)
+
+    def _ipython_display_(self) -> None:   # VPython prints nothing for a light
+        pass
+
+
+class distant_light(_Light):
+    """Light from a direction, fixed in the world (no fall-off)."""
+
+    def _read(self, args: dict) -> None:
+        self._direction = _vec(args.pop("direction", vector(0, 0, 1)), "direction")
+
+    direction = property(lambda self: self._direction,
+                         lambda self, v: setattr(self, "_direction", _vec(v, "direction")))
+
+
+class local_light(_Light):
+    """Light from a point in the scene."""
+
+    def _read(self, args: dict) -> None:
+        self._pos = _vec(args.pop("pos", vector(0, 0, 0)), "pos")
+
+    pos = property(lambda self: self._pos,
+                   lambda self, v: setattr(self, "_pos", _vec(v, "pos")))

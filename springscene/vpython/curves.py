@@ -10,7 +10,10 @@ vectors or dictionaries ``{"pos": v, "color": c, "radius": r}``; ``append``,
 
 from __future__ import annotations
 
-from .objects import _Base, _vec
+import numpy as np
+
+from .base import _Base
+from .checks import _vec
 from .vector import vector
 
 
@@ -202,8 +205,6 @@ class _PointList(_Base):
 
     def _arrays(self):
         """Positions (n, 3), colours (n, 3) and radii (n,) of the visible points."""
-        import numpy as np
-
         pts = [p for p in self._pts if p.get("visible", True)]
         n = len(pts)
         pos = np.empty((n, 3))

@@ -2,7 +2,7 @@
 
 A frame costs one geometry update per batch, not one VTK call per object: every
 visible object of a kind (and opacity, shininess, emissive) is placed with one
-numpy pass (:func:`springscene.vpython.shapes.place`) into one mesh whose points,
+numpy pass (:func:`springscene.vpython.placement.place`) into one mesh whose points,
 normals and colours are rewritten in place. A batch none of whose objects changed
 is not touched. Labels are the exception: each is a text actor.
 
@@ -24,7 +24,7 @@ from ..view import backend, camera
 from ..view.geometry import HelixTube
 from ..view.scene import (MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, apply_view, grab,
                      title_color)
-from . import shapes
+from . import placement, shapes
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
 TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
@@ -51,7 +51,7 @@ class _Batch:
     """One actor and mesh holding every object of one kind and look."""
 
     def __init__(self, plotter, key: tuple, mode: str) -> None:
-        import pyvista as pv
+        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
 
         self.key, self.mode = key, mode
         self.signature = None
@@ -141,7 +141,7 @@ def _frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     up = np.array([o._up._xyz() for o in objs], dtype=float)
     size = np.array([o._size._xyz() for o in objs], dtype=float)
     color = np.array([o._color._xyz() for o in objs], dtype=float)
-    return pos, shapes.frames(axis, up), size, color
+    return pos, placement.frames(axis, up), size, color
 
 
 _TEMPLATES: dict = {}
@@ -149,7 +149,7 @@ _TUBES: dict[tuple, HelixTube] = {}
 MAX_CACHED_TUBES = 256
 
 
-def template(kind: str, slices: int | None = None) -> shapes.Mesh:
+def template(kind: str, slices: int | None = None) -> placement.Mesh:
     """The unit mesh of a template kind (a sphere of ``slices``), made once."""
     key = (kind, slices)
     if key not in _TEMPLATES:
@@ -176,7 +176,7 @@ def object_mesh(obj):
     if kind in TEMPLATES:
         t = template(kind)
         pos, R, size, color = _frames([obj])
-        points, normals = shapes.place(t, pos, R, size)
+        points, normals = placement.place(t, pos, R, size)
         return points, normals, t.triangles, np.repeat(_rgb(color), len(points), axis=0)
     if kind == "curve":
         kind = "tube" if obj._radius > 0 else kind
@@ -191,7 +191,7 @@ def _mesh(kind: str, obj):
         return _helix(obj)
     if kind in ("arrow", "ring", "compound"):
         pos = np.array([obj._pos._xyz()])
-        R = shapes.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
+        R = placement.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
     if kind == "arrow":
         dims = shapes.arrow_dims(obj._size.x, obj._shaftwidth, obj._headwidth,
                                  obj._headlength)
@@ -203,7 +203,7 @@ def _mesh(kind: str, obj):
     elif kind == "compound":
         mesh = obj._mesh                  # unit-sized at construction: scale by size
         scale = np.array([obj._size._xyz()])
-        points, normals = shapes.place(mesh, pos, R, scale)
+        points, normals = placement.place(mesh, pos, R, scale)
         return points, normals, mesh.triangles, obj._vertex_rgb()
     elif kind == "tube":
         p, col, rad = obj._arrays()
@@ -219,12 +219,12 @@ def _mesh(kind: str, obj):
         t = template("sphere")
         n = len(t.points)
         eye = np.broadcast_to(np.eye(3), (len(p), 3, 3))
-        points, normals = shapes.place(t, p, eye, np.repeat(2 * rad[:, None], 3, axis=1))
-        tris = shapes.tile(t.triangles, n, len(p))
+        points, normals = placement.place(t, p, eye, np.repeat(2 * rad[:, None], 3, axis=1))
+        tris = placement.tile(t.triangles, n, len(p))
         return points, normals, tris, np.repeat(_rgb(col), n, axis=0)
     else:
         raise ValueError(kind)
-    points, normals = shapes.place(mesh, pos, R, scale)
+    points, normals = placement.place(mesh, pos, R, scale)
     return points, normals, mesh.triangles, np.repeat(_rgb([obj._color._xyz()]),
                                                       len(points), axis=0)
 
@@ -239,7 +239,7 @@ def _helix(obj):
         tube = _TUBES[key] = HelixTube(radius, thickness, obj._coils, obj._ccw)
         tube.triangles = _quads_to_triangles(tube.faces())
     axis = np.array(obj._axis._xyz())
-    R = shapes.frames(axis[None], np.array([obj._up._xyz()]))[0]
+    R = placement.frames(axis[None], np.array([obj._up._xyz()]))[0]
     if not np.linalg.norm(axis) > 0:
         return None
     points, normals = tube.points(obj._pos._xyz(), axis, R)
@@ -262,7 +262,7 @@ class Renderer:
 
     def __init__(self, cv, antialias: bool = True, backend_name: str = "auto") -> None:
         backend.select(backend_name)
-        import pyvista as pv
+        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
 
         self.cv = cv
         self.width, self.height = int(cv.width), int(cv.height)
@@ -288,7 +288,7 @@ class Renderer:
         """Bring the scene up to date and return it as (height, width, 3) uint8."""
         self.sync()
         if self._pixels is None:
-            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: vtk
             self._pixels = vtkUnsignedCharArray()
         return grab(self.plotter.ren_win, self.width, self.height, self._pixels)
 
@@ -383,12 +383,12 @@ class Renderer:
         pos, R, size, color = _frames(objs)
         slices = self._sphere_slices(pos, size) if key[0] == "sphere" else None
         template_ = template(key[0], slices)
-        points, normals = shapes.place(template_, pos, R, size)
+        points, normals = placement.place(template_, pos, R, size)
         n = len(template_.points)
         colors = np.repeat(_rgb(color), n, axis=0)
         signature = ("tmpl", len(objs), slices)
         cells = None if signature == batch.signature else \
-            shapes.vtk_cells(shapes.tile(template_.triangles, n, len(objs)))
+            placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
         batch.set(points, normals, colors, cells, signature, style)
         # bounds: the object's oriented box
         half = np.abs(R) @ (size[:, :, None] / 2)
@@ -421,7 +421,7 @@ class Renderer:
         if signature == batch.signature:
             cells = None
         else:
-            cells = shapes.vtk_cells(np.concatenate([m[2] + off
+            cells = placement.vtk_cells(np.concatenate([m[2] + off
                                                      for m, off in zip(meshes, offsets)]))
         batch.set(points, normals, colors, cells, signature, style)
         self._bounds[key] = np.array([[m[0].min(axis=0), m[0].max(axis=0)] for m in meshes])
@@ -463,7 +463,7 @@ class Renderer:
                     for lt in lights)
         if sig == self._lights_sig:
             return
-        import pyvista as pv
+        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
 
         self.plotter.remove_all_lights()
         for kind, colour, where in sig:
@@ -519,7 +519,7 @@ class Renderer:
         self.view = v
 
     def _sync_labels(self, labels: list) -> None:
-        from vtkmodules.vtkRenderingCore import vtkTextActor
+        from vtkmodules.vtkRenderingCore import vtkTextActor  # noqa: PLC0415  heavy: vtk
 
         seen = set()
         for lab in labels:

@@ -164,21 +164,9 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
                          f"not {media_kind!r}")
     base = path.parent
     name = html.unescape(_TAG.sub("", str(title_html))).strip() or Path(media).name
-    w, h = int(width), int(height)
-    src = _relative(media, base)
-    if media_kind == "video":
-        canvas = (f'<video src="{src}" width="{w}" height="{h}" controls loop muted autoplay '
-                  f"playsinline></video>")
-    else:
-        canvas = f'<img src="{src}" width="{w}" height="{h}" alt="{_attr(Path(media).name)}">'
+    canvas = _canvas_html(media, media_kind, int(width), int(height), base)
     title_ws = [x for x in widgets if getattr(x, "anchor", "caption") == "title"]
     caption_ws = [x for x in widgets if getattr(x, "anchor", "caption") != "title"]
-    graphs = []
-    for i, img in enumerate(graph_images, 1):
-        size = _image_size(base / img if not Path(img).is_absolute() else Path(img))
-        dims = f' width="{size[0]}" height="{size[1]}"' if size else ""
-        graphs.append(f'<img class="vp-graph" src="{_relative(img, base)}"{dims} '
-                      f'alt="graph {i}">')
     text = "\n".join([
         "<!DOCTYPE html>",
         '<html lang="en">',
@@ -192,7 +180,7 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         f'<div class="vp-canvas">{canvas}</div>',
         f'<div class="vp-caption">{_fill(str(caption_html), caption_ws)}</div>',
         '<div class="vp-graphs">',
-        *graphs,
+        *_graphs_html(graph_images, base),
         "</div>",
         "</body>",
         "</html>",
@@ -202,10 +190,30 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
     return path
 
 
+def _canvas_html(media: str, media_kind: str, w: int, h: int, base: Path) -> str:
+    """The ``<video>`` (or ``<img>``) that stands where the canvas was."""
+    src = _relative(media, base)
+    if media_kind == "video":
+        return (f'<video src="{src}" width="{w}" height="{h}" controls loop muted autoplay '
+                f"playsinline></video>")
+    return f'<img src="{src}" width="{w}" height="{h}" alt="{_attr(Path(media).name)}">'
+
+
+def _graphs_html(graph_images: list[str], base: Path) -> list[str]:
+    """One ``<img>`` a graph, with the image's size when it can be read."""
+    graphs = []
+    for i, img in enumerate(graph_images, 1):
+        size = _image_size(base / img if not Path(img).is_absolute() else Path(img))
+        dims = f' width="{size[0]}" height="{size[1]}"' if size else ""
+        graphs.append(f'<img class="vp-graph" src="{_relative(img, base)}"{dims} '
+                      f'alt="graph {i}">')
+    return graphs
+
+
 def _image_size(p: Path) -> tuple[int, int] | None:
     """(width, height) of an image file, or None if it cannot be read."""
     try:
-        from PIL import Image
+        from PIL import Image  # noqa: PLC0415  heavy: Pillow
 
         with Image.open(p) as im:
             return im.size

@@ -20,10 +20,16 @@ from pathlib import Path
 
 import numpy as np
 
+from .. import vpython as vp
 from ..errors import ProgramError, UserError
 from ..outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps, \
     write_png
-from . import runtime
+from . import runtime, widgets
+from .canvas import canvas
+from .draw import Renderer
+from .graph import graphs
+from .graph_images import GraphStrip, write_images
+from .page import write_page
 
 FORMATS = VIDEO_FORMATS + (".png",)
 DEFAULT_FPS = 50
@@ -103,8 +109,6 @@ def _user_traceback(exc: BaseException) -> str:
 
 def _install_modules():
     """Make ``import vpython`` (and ``visual``, ``visual.graph``) import springscene's module."""
-    from .. import vpython as vp
-
     visual = types.ModuleType("visual", "springscene's vpython under VPython 6's name")
     for name in vp.__all__:
         setattr(visual, name, getattr(vp, name))
@@ -155,16 +159,12 @@ class _Film:
         self.notes: list[str] = []
 
     def renderer(self, cv):
-        from .draw import Renderer
-
         r = self.renderers.get(id(cv))
         if r is None:
             r = self.renderers[id(cv)] = Renderer(cv, self.antialias, self.backend)
         return r
 
     def _choose_canvas(self):
-        from .canvas import canvas
-
         shown = [cv for cv in canvas._all if cv._visible and cv._objects]
         if len(shown) > 1:
             self.notes.append(f"{len(shown)} canvases have objects; the video shows the first")
@@ -178,8 +178,6 @@ class _Film:
     def take(self) -> None:
         image = self.picture()
         if self.writer is None:
-            from .graph import GraphStrip, graphs
-
             h, w = image.shape[:2]
             if "graph" in self.overlays:
                 if graphs():
@@ -213,28 +211,9 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     the canvas was), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
     ``on_frame(index, image)`` is called for each frame taken (for tests).
     """
-    path = _check_program(program)
-    out = check_output(out, FORMATS)
-    for name in overlays:
-        if name not in OVERLAYS:
-            raise UserError(f"--overlay: unknown overlay {name!r} (choose from "
-                            f"{', '.join(OVERLAYS)})")
-    still = out.suffix.lower() == ".png"
-    if still and frames is not None:
-        raise UserError("--frames: a .png output is one still; leave --frames out")
-    budget, limit = _frame_budget(duration, frames, fps)
-    if not still:
-        check_video_fps(out, fps)
-    try:
-        source = path.read_text(encoding="utf-8")
-        code = compile(source, str(path), "exec")
-    except UnicodeDecodeError:
-        raise UserError(f"{path}: not a UTF-8 text file") from None
-    except SyntaxError as exc:
-        raise ProgramError(_user_traceback(exc)) from None
-
-    from .. import vpython as vp
-
+    path, out, still, budget, limit = _check_request(program, out, duration, frames, fps,
+                                                     overlays)
+    code = _compile(path)
     vp.reset()
     start = time.perf_counter()
     images: list[Path] = []
@@ -248,37 +227,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
 
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
-        saved = _install_modules()
-        modules_before = set(sys.modules)
-        saved_argv, saved_path = sys.argv, list(sys.path)
-        sys.argv = [str(path)]
-        sys.path.insert(0, str(path.resolve().parent))
-        runtime.start(timeline)
-        runtime.set_capture(capture)
-        ended, ok = "program", False
-        try:
-            exec(code, {"__name__": "__main__", "__file__": str(path),
-                        "__builtins__": __builtins__})
-            ok = True
-        except runtime.Stop:
-            ended, ok = limit, True
-        except SystemExit as exc:
-            if exc.code not in (None, 0):
-                raise ProgramError(f"{path}: the program exited with status {exc.code}") \
-                    from None
-            ok = True
-        except KeyboardInterrupt:
-            raise
-        except BaseException as exc:     # the program's own error, with its own traceback
-            raise ProgramError(_user_traceback(exc)) from None
-        finally:
-            runtime.start(None)
-            runtime.set_capture(None)
-            sys.argv, sys.path[:] = saved_argv, saved_path
-            _restore_modules(saved)
-            _forget_program_modules(modules_before, path.resolve().parent)
-            if not ok:
-                film.close(False)
+        ended = _execute(code, path, timeline, capture, limit, film)
         try:
             if still:
                 write_png(tmp, film.picture())
@@ -290,8 +239,6 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
                                time.perf_counter() - start, ended,
                                size=film.writer.size if film.writer is not None else None)
     result.images = images + _write_extras(out, result, page, still)
-    from . import widgets
-
     result.notes = film.notes + widgets.notes()
     if ended == "duration" and duration is None:
         result.notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
@@ -299,16 +246,78 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     return result
 
 
+def _check_request(program, out, duration: float | None, frames: int | None, fps: int,
+                   overlays: tuple[str, ...]) -> tuple[Path, Path, bool, int, str]:
+    """The program, the checked output, whether it is a still, and the frame budget
+    (how many frames, and what ``ended`` says when they are all taken)."""
+    path = _check_program(program)
+    out = check_output(out, FORMATS)
+    for name in overlays:
+        if name not in OVERLAYS:
+            raise UserError(f"--overlay: unknown overlay {name!r} (choose from "
+                            f"{', '.join(OVERLAYS)})")
+    still = out.suffix.lower() == ".png"
+    if still and frames is not None:
+        raise UserError("--frames: a .png output is one still; leave --frames out")
+    budget, limit = _frame_budget(duration, frames, fps)
+    if not still:
+        check_video_fps(out, fps)
+    return path, out, still, budget, limit
+
+
+def _compile(path: Path) -> types.CodeType:
+    """The program's code; a syntax error is reported with the program's own traceback."""
+    try:
+        source = path.read_text(encoding="utf-8")
+        return compile(source, str(path), "exec")
+    except UnicodeDecodeError:
+        raise UserError(f"{path}: not a UTF-8 text file") from None
+    except SyntaxError as exc:
+        raise ProgramError(_user_traceback(exc)) from None
+
+
+def _execute(code: types.CodeType, path: Path, timeline: runtime.Timeline, capture,
+             limit: str, film: _Film) -> str:
+    """Run the program as ``__main__`` on ``timeline``; how it ended ("program" or
+    ``limit``). Its modules, ``sys.argv`` and ``sys.path`` are put back afterwards."""
+    saved = _install_modules()
+    modules_before = set(sys.modules)
+    saved_argv, saved_path = sys.argv, list(sys.path)
+    sys.argv = [str(path)]
+    sys.path.insert(0, str(path.resolve().parent))
+    runtime.start(timeline)
+    runtime.set_capture(capture)
+    ended, ok = "program", False
+    try:
+        exec(code, {"__name__": "__main__", "__file__": str(path),
+                    "__builtins__": __builtins__})
+        ok = True
+    except runtime.Stop:
+        ended, ok = limit, True
+    except SystemExit as exc:
+        if exc.code not in (None, 0):
+            raise ProgramError(f"{path}: the program exited with status {exc.code}") \
+                from None
+        ok = True
+    except KeyboardInterrupt:
+        raise
+    except BaseException as exc:     # the program's own error, with its own traceback
+        raise ProgramError(_user_traceback(exc)) from None
+    finally:
+        runtime.start(None)
+        runtime.set_capture(None)
+        sys.argv, sys.path[:] = saved_argv, saved_path
+        _restore_modules(saved)
+        _forget_program_modules(modules_before, path.resolve().parent)
+        if not ok:
+            film.close(False)
+    return ended
+
+
 def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> list[Path]:
     """The program's graphs as PNGs and ``page.html`` beside ``out``."""
-    from . import widgets
-    from .canvas import canvas
-    from .graph import graphs, write_images
-
     written = list(write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if page:
-        from .page import write_page
-
         cv = next((c for c in canvas._all if c._objects), canvas.get_selected())
         kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
         result.page = write_page(out.parent / "page.html", title_html=cv.title,

@@ -1,50 +1,32 @@
-"""The geometry of VPython's objects as numpy arrays, placed many at a time.
+"""The meshes of VPython's objects, one function a kind, as numpy arrays.
 
-Each kind of object has a *template* mesh in its own local frame; :func:`place`
-puts M copies of a template into the world with one ``einsum``. No VTK here
+Each kind of object has a *template* mesh in its own local frame (the convention
+is :mod:`.placement`'s, which puts copies of it into the world). No VTK here
 (the sphere's vertex layout is taken once from :func:`pyvista.Sphere`, so a
 VPython ``sphere`` renders exactly like springscene's existing ball).
-
-The frame convention shared with the renderer
----------------------------------------------
-An object has ``pos``, ``axis``, ``up`` and ``size``. Its local frame is
-X = norm(axis), Y = norm(up - (up.X) X), Z = X x Y, and a template point ``p``
-goes to ``pos + R @ (p * size)`` with R's columns (X, Y, Z). Centred kinds
-(sphere, ellipsoid, box) span [-0.5, 0.5] on every local axis; end-anchored
-kinds (cylinder, cone, pyramid) span x in [0, 1] and y, z in [-0.5, 0.5], so
-``pos`` is one end and ``size = (length, diameter, diameter)``. Arrow and ring
-templates are built in local *lengths* (placed with size (1, 1, 1)) because
-their proportions do not scale linearly.
 
 VPython facts used (VPython 7, ``vpython/vpython-jupyter``; GlowScript,
 ``vpython/glowscript``):
 
-- ``vpython/vpython.py``: default sizes (box, pyramid, ellipsoid (1,1,1);
-  sphere (2,2,2); cylinder, cone, helix (1,2,2); arrow (1,0.2,0.2); ring
-  (0.2,2.2,2.2)); ``radius = size.y/2``; ring ``thickness = size.x/2`` and
-  ``radius = (size.y - size.x)/2``; setting ``axis`` sets ``size.x = |axis|``
-  except for sphere and ring; setting ``size`` rescales ``axis`` except for
-  ring; ``adjust_up`` rotates ``up`` with the axis.
 - ``lib/glow/primitives.js`` ``arrow_update``: shaft and head widths/length and
   their shrinking rules (:func:`arrow_dims`); the arrow is a box shaft plus a
-  pyramid head. ``getTransformedMesh``: the frame rule when up is parallel to
-  the axis (:func:`frames`).
+  pyramid head.
 - ``lib/glow/mesh.js``: ``makeCube`` (24 vertices), ``makeCylinder`` (50
   sides), ``makeCone`` (200 sides), ``makePyramid``, ``makeRing`` (60 cross
   sections of 20 sides), ``makeCurveSegment`` (16-sided open tube with a
   hemisphere on its far end).
-- GlowScript's object vertex shaders transform normals as ``rot * (normal /
-  size)``, i.e. by the inverse transpose (:func:`place`).
+
+VPython's size rules (default sizes, radius and size) are :mod:`.shape_sizes`.
 """
 
 from __future__ import annotations
 
 import functools
-from typing import NamedTuple
 
 import numpy as np
 
 from ..view.geometry import TUBE_SIDES
+from .placement import Mesh, _nonzero, _unit_rows, frames, tile
 
 SPHERE_SLICES = 30      # our scene's ball (GlowScript: makeSphere(0.5, 30))
 CYLINDER_SIDES = 50     # mesh.js makeCylinder: N = 50
@@ -54,112 +36,7 @@ RING_SIDES = 20         # mesh.js makeRing: N = 20 sides of each cross section
 CURVE_SIDES = TUBE_SIDES  # mesh.js makeCurveSegment: N = 16
 CAP_RINGS = 4           # latitude rings of a curve's hemispherical joint (ours)
 
-# -- sizes in VPython terms ---------------------------------------------------------------
-
-DEFAULT_SIZE = {         # vpython.py: args['_default_size'] of each class
-    "box": (1.0, 1.0, 1.0),
-    "pyramid": (1.0, 1.0, 1.0),
-    "ellipsoid": (1.0, 1.0, 1.0),
-    "sphere": (2.0, 2.0, 2.0),
-    "cylinder": (1.0, 2.0, 2.0),
-    "cone": (1.0, 2.0, 2.0),
-    "helix": (1.0, 2.0, 2.0),
-    "arrow": (1.0, 0.2, 0.2),
-    "ring": (0.2, 2.2, 2.2),
-}
-CENTRED = frozenset({"sphere", "ellipsoid", "box", "ring"})   # pos is the centre
-SIZE_INDEX = {"length": 0, "height": 1, "width": 2}           # box.length = size.x, ...
-_RADIUS_ALL = frozenset({"sphere", "ellipsoid"})              # radius sets (d, d, d)
-_RADIUS_YZ = frozenset({"cylinder", "cone", "helix"})         # radius sets (x, d, d)
-
-
-def default_size(kind: str) -> np.ndarray:
-    """VPython's default ``size`` of an object of this kind (a new array)."""
-    return np.array(DEFAULT_SIZE[kind], dtype=float)
-
-
-def is_centred(kind: str) -> bool:
-    """True when ``pos`` is the object's centre, False when it is one end."""
-    return kind in CENTRED
-
-
-def axis_sets_length(kind: str) -> bool:
-    """Whether setting ``axis`` sets ``size.x = |axis|`` (vpython.py: not for sphere, ring)."""
-    return kind not in ("sphere", "ring")
-
-
-def size_sets_axis(kind: str) -> bool:
-    """Whether setting ``size`` rescales ``axis`` to ``size.x`` (vpython.py: not for ring)."""
-    return kind != "ring"
-
-
-def radius_from_size(kind: str, size) -> float:
-    """``radius`` as VPython reads it from ``size``.
-
-    ``size.y / 2`` for sphere, ellipsoid, cylinder, cone and helix; for a ring
-    the radius of the tube's centre line, ``(size.y - size.x) / 2``.
-    """
-    s = np.asarray(size, dtype=float)
-    if kind == "ring":
-        return float((s[1] - s[0]) / 2)
-    if kind in _RADIUS_ALL or kind in _RADIUS_YZ:
-        return float(s[1] / 2)
-    raise AttributeError(f"a {kind} has no radius")
-
-
-def size_for_radius(kind: str, size, radius: float) -> np.ndarray:
-    """The ``size`` after setting ``radius`` (vpython.py's radius setters)."""
-    s = np.array(size, dtype=float)
-    d = 2.0 * radius
-    if kind in _RADIUS_ALL:
-        s[:] = d
-    elif kind in _RADIUS_YZ:
-        s[1] = s[2] = d
-    elif kind == "ring":
-        s[1] = s[2] = 2.0 * (radius + s[0] / 2)
-    else:
-        raise AttributeError(f"a {kind} has no radius")
-    return s
-
-
-def ring_thickness_from_size(size) -> float:
-    """A ring's ``thickness``: the *radius* of its cross section, ``size.x / 2``."""
-    return float(np.asarray(size, dtype=float)[0] / 2)
-
-
-def size_for_ring_thickness(size, thickness: float) -> np.ndarray:
-    """A ring's ``size`` after setting ``thickness``, keeping its radius (vpython.py)."""
-    s = np.array(size, dtype=float)
-    radius = (s[1] - s[0]) / 2
-    s[0] = 2.0 * thickness
-    s[1] = s[2] = 2.0 * (radius + thickness)
-    return s
-
-
-def ring_size(radius: float, thickness: float) -> np.ndarray:
-    """``size`` of a ring of centre-line ``radius`` and cross-section radius ``thickness``."""
-    return np.array([2 * thickness, 2 * (radius + thickness), 2 * (radius + thickness)])
-
-
-def helix_wire_radius(size, thickness: float = 0.0) -> float:
-    """Radius of a helix's wire: ``thickness / 2``, or ``size.y / 40`` when unset (primitives.js)."""
-    return thickness / 2 if thickness else float(np.asarray(size, dtype=float)[1] / 40)
-
-
 # -- templates ----------------------------------------------------------------------------
-
-class Mesh(NamedTuple):
-    """A triangle mesh: vertices, unit vertex normals, outward counter-clockwise triangles."""
-
-    points: np.ndarray     # (n, 3) float64
-    normals: np.ndarray    # (n, 3) float64, unit
-    triangles: np.ndarray  # (f, 3) int64
-
-
-def _unit_rows(v: np.ndarray) -> np.ndarray:
-    n = np.linalg.norm(v, axis=-1, keepdims=True)
-    return v / np.where(n == 0, 1.0, n)
-
 
 def _mesh(points, normals, triangles) -> Mesh:
     return Mesh(np.ascontiguousarray(points, dtype=float),
@@ -182,7 +59,7 @@ def sphere(slices: int = SPHERE_SLICES) -> Mesh:
     radial directions. Also the ellipsoid's template (GlowScript draws an
     ellipsoid with the sphere model).
     """
-    import pyvista as pv          # only to copy its vertex layout, once
+    import pyvista as pv  # noqa: PLC0415  heavy: pyvista, only to copy its vertex layout, once
 
     s = pv.Sphere(radius=0.5, theta_resolution=slices, phi_resolution=slices)
     points = np.asarray(s.points, dtype=float)
@@ -477,135 +354,8 @@ def template(kind: str) -> Mesh:
     return TEMPLATES[kind]()
 
 
-# -- frames -------------------------------------------------------------------------------
-
-_X_AXIS = np.array([1.0, 0.0, 0.0])
-_Y_AXIS = np.array([0.0, 1.0, 0.0])
-
-
-def _robust_unit(v: np.ndarray) -> np.ndarray:
-    """Unit rows, dividing by the largest component first (as GlowScript's shaders); zero stays zero."""
-    vmax = np.abs(v).max(axis=-1, keepdims=True)
-    w = v / np.where(vmax == 0, 1.0, vmax)
-    return _unit_rows(w)
-
-
-def frames(axis, up) -> np.ndarray:
-    """Local frames (M, 3, 3), columns X, Y, Z, of objects with these ``axis`` and ``up``.
-
-    X = norm(axis), Z = norm(X x norm(up)), Y = Z x X, i.e. Y = norm(up - (up.X) X).
-    When up is parallel to the axis (``|X x up|^2 < 1e-10``) VPython's rule
-    (primitives.js ``getTransformedMesh``, GlowScript's object shaders) takes
-    up = (1, 0, 0) instead, and (0, 1, 0) if that is parallel too. A zero
-    axis is taken as (1, 0, 0) (the object then has zero length anyway).
-    """
-    axis, up = np.broadcast_arrays(np.atleast_2d(np.asarray(axis, dtype=float)),
-                                   np.asarray(up, dtype=float))
-    X = _robust_unit(axis)
-    X[~X.any(axis=1)] = _X_AXIS
-    Z = np.cross(X, _robust_unit(up))
-    bad = np.einsum("ij,ij->i", Z, Z) < 1e-10
-    if bad.any():
-        Z[bad] = np.cross(X[bad], _X_AXIS)
-        worse = bad.copy()
-        worse[bad] = np.einsum("ij,ij->i", Z[bad], Z[bad]) < 1e-10
-        Z[worse] = np.cross(X[worse], _Y_AXIS)
-    Z = _unit_rows(Z)
-    Y = _unit_rows(np.cross(Z, X))
-    return np.stack([X, Y, Z], axis=-1)
-
-
-def adjust_up(old_axis, new_axis, up) -> np.ndarray:
-    """VPython's ``up`` after ``axis`` changes from ``old_axis`` to ``new_axis``, vectorised (M, 3).
-
-    vpython.py ``adjust_up``: when the new axis is not exactly perpendicular to
-    up, up is rotated by the angle between the axes about ``old x new``
-    (negated for a half turn; unchanged below 1e-6 rad or for a zero axis).
-    The same rotation as :class:`springscene.geometry.HelixFrame`.
-    """
-    old, new, up = np.broadcast_arrays(*(np.atleast_2d(np.asarray(v, dtype=float))
-                                         for v in (old_axis, new_axis, up)))
-    up = up.copy()
-    a, b = _unit_rows(old), _unit_rows(new)
-    angle = np.arccos(np.clip(np.einsum("ij,ij->i", a, b), -1.0, 1.0))
-    turn = (new.any(axis=1) & old.any(axis=1) & (np.einsum("ij,ij->i", new, up) != 0)
-            & (angle > 1e-6))
-    flip = turn & (np.abs(angle - np.pi) < 1e-6)
-    rot = turn & ~flip
-    k = _unit_rows(np.cross(a[rot], b[rot]))
-    v, c, s = up[rot], np.cos(angle[rot])[:, None], np.sin(angle[rot])[:, None]
-    up[rot] = v * c + np.cross(k, v) * s + k * np.einsum("ij,ij->i", k, v)[:, None] * (1 - c)
-    up[flip] = -up[flip]
-    return up
-
-
-# -- placement ----------------------------------------------------------------------------
-
-_TINY = 1e-30
-
-
-def _nonzero(size: np.ndarray) -> np.ndarray:
-    """``size`` with zero components replaced by a tiny number, for ``normal / size``."""
-    return np.where(np.abs(size) < _TINY, _TINY, size)
-
-
-def place(mesh: Mesh, pos, R, size) -> tuple[np.ndarray, np.ndarray]:
-    """World points and unit normals, each (M * n, 3), of M copies of a template.
-
-    ``world = pos + R @ (p * size)``; normals by the inverse transpose,
-    ``R @ norm(n / size)`` (GlowScript: ``rot * (normal / size)``). Copies with
-    equal size components (spheres) skip the normalisation. ``pos`` (M, 3),
-    ``R`` (M, 3, 3) from :func:`frames`, ``size`` (M, 3); any of them may be a
-    single row broadcast to all. Both are one batched matrix product with the
-    template (points in homogeneous coordinates, so ``pos`` comes free).
-    """
-    R = np.asarray(R, dtype=float)
-    if R.ndim == 2:
-        R = R[None]
-    pos = np.asarray(pos, dtype=float).reshape(-1, 3)
-    size = np.asarray(size, dtype=float).reshape(-1, 3)
-    M = max(len(R), len(pos), len(size))
-    R, pos, size = (np.broadcast_to(x, (M,) + x.shape[1:]) for x in (R, pos, size))
-    n = len(mesh.points)
-    # out[m, k, i] = sum_j p_h[k, j] H[m, i, j] with H = [R diag(size) | pos]
-    H = np.concatenate([R * size[:, None, :], pos[:, :, None]], axis=2)
-    homogeneous = np.hstack([mesh.points, np.ones((n, 1))])
-    points = np.empty((M, n, 3))
-    np.matmul(homogeneous[None], H.transpose(0, 2, 1), out=points)
-    normals = np.empty((M, n, 3))
-    uniform = (size[:, 0] == size[:, 1]) & (size[:, 1] == size[:, 2]) & (size[:, 0] != 0)
-    if uniform.all():
-        np.matmul(mesh.normals[None], R.transpose(0, 2, 1), out=normals)
-    else:
-        scale = np.where(uniform[:, None], 1.0, 1.0 / _nonzero(size))
-        np.matmul(mesh.normals[None], (R * scale[:, None, :]).transpose(0, 2, 1), out=normals)
-        odd = ~uniform
-        part = normals if odd.all() else normals[odd]
-        length = np.sqrt(np.einsum("mki,mki->mk", part, part))
-        part /= np.where(length == 0, 1.0, length)[:, :, None]
-        if part is not normals:
-            normals[odd] = part
-    return points.reshape(-1, 3), normals.reshape(-1, 3)
-
-
-def tile(triangles, n_points: int, M: int) -> np.ndarray:
-    """Triangle indices (M * f, 3) of M copies of a mesh of ``n_points`` points, copy after copy."""
-    triangles = np.asarray(triangles, dtype=np.int64)
-    offsets = n_points * np.arange(M, dtype=np.int64)
-    return (triangles[None] + offsets[:, None, None]).reshape(-1, 3)
-
-
-def vtk_cells(triangles) -> np.ndarray:
-    """Triangles in VTK's flat cell layout ``[3, a, b, c, 3, ...]`` for ``pyvista.PolyData``."""
-    triangles = np.asarray(triangles, dtype=np.int64).reshape(-1, 3)
-    return np.hstack([np.full((len(triangles), 1), 3, dtype=np.int64), triangles]).ravel()
-
-
 __all__ = [
     "Mesh", "sphere", "box", "cylinder", "cone", "pyramid", "arrow", "arrow_dims", "ring",
-    "tube", "tube_vertex_points", "template", "frames", "adjust_up", "place", "tile", "vtk_cells",
-    "default_size", "is_centred", "axis_sets_length", "size_sets_axis", "radius_from_size",
-    "size_for_radius", "ring_thickness_from_size", "size_for_ring_thickness", "ring_size",
-    "helix_wire_radius", "DEFAULT_SIZE", "SIZE_INDEX", "SPHERE_SLICES", "CYLINDER_SIDES",
+    "tube", "tube_vertex_points", "template", "SPHERE_SLICES", "CYLINDER_SIDES",
     "CONE_SIDES", "RING_SECTIONS", "RING_SIDES", "CURVE_SIDES",
 ]

@@ -19,6 +19,7 @@ import pytest
 
 # the package re-exports the class ``graph`` under the module's name: import the modules
 G = importlib.import_module("springscene.vpython.graph")
+GI = importlib.import_module("springscene.vpython.graph_images")   # graphs as pictures
 W = importlib.import_module("springscene.vpython.widgets")
 P = importlib.import_module("springscene.vpython.page")
 
@@ -169,23 +170,23 @@ def sine_graph(label: str = "y", **limits):
 
 def test_draw_shows_the_curve_in_its_colour_and_grows_with_upto():
     g, c = sine_graph(label="", xmin=0, xmax=6, ymin=-1, ymax=1)
-    img = G.draw(g, 500, 300)
+    img = GI.draw(g, 500, 300)
     assert img.shape == (300, 500, 3) and img.dtype == np.uint8
     assert count_color(img, (255, 0, 0)) > 300
     assert count_color(img, (255, 255, 255)) > 0.5 * img.shape[0] * img.shape[1]
-    few = G.draw(g, 500, 300, upto=20)          # a tenth of the points, on the same axes
+    few = GI.draw(g, 500, 300, upto=20)          # a tenth of the points, on the same axes
     assert 20 < count_color(few, (255, 0, 0)) < count_color(img, (255, 0, 0)) / 4
-    none = G.draw(g, 500, 300, upto=0)
+    none = GI.draw(g, 500, 300, upto=0)
     assert count_color(none, (255, 0, 0), tol=60) == 0
-    assert G.draw(g).shape == (400, 640, 3)           # the graph's own size
+    assert GI.draw(g).shape == (400, 640, 3)           # the graph's own size
 
 
 def test_autoscaled_axes_follow_the_points_so_far():
     g, c = sine_graph()
-    G.draw(g, 500, 300, upto=20)
-    panel = G._figures[(id(g), 500, 300)].panels[0]
+    GI.draw(g, 500, 300, upto=20)
+    panel = GI._figures[(id(g), 500, 300)].panels[0]
     assert panel.ax.get_xlim() == pytest.approx((0.0, 0.6))       # to the next whole tick
-    G.draw(g, 500, 300)
+    GI.draw(g, 500, 300)
     assert panel.ax.get_xlim() == pytest.approx((0.0, 6.0))
     lo, hi = panel.ax.get_ylim()
     assert lo < -1 and hi > 1 and hi - lo <= 3              # the data, a margin, whole ticks
@@ -195,17 +196,17 @@ def test_draw_bars_dots_and_hidden_series():
     g = G.graph(xmin=0, xmax=10, ymin=0, ymax=10)
     bars = G.gvbars(color=V(0, 0.6, 0), delta=0.8, data=[[i, i] for i in range(1, 9)])
     dots = G.gdots(color=BLUE, data=[[i, 9 - i] for i in range(1, 9)])
-    img = G.draw(g, 400, 300)
+    img = GI.draw(g, 400, 300)
     # bars are filled with their colour at half opacity, edged in it
     assert count_color(img, (127, 178, 127), tol=25) > 2000
     assert count_color(img, (0, 0, 255)) > 100
     dots.visible = False
-    assert count_color(G.draw(g, 400, 300), (0, 0, 255)) == 0
+    assert count_color(GI.draw(g, 400, 300), (0, 0, 255)) == 0
     bars.delete()
-    assert count_color(G.draw(g, 400, 300), (127, 178, 127), tol=25) == 0
+    assert count_color(GI.draw(g, 400, 300), (127, 178, 127), tol=25) == 0
     h = G.graph()
     G.ghbars(color=RED, data=[[3, 1], [5, 2]])
-    assert count_color(G.draw(h, 300, 200), (255, 127, 127), tol=25) > 500
+    assert count_color(GI.draw(h, 300, 200), (255, 127, 127), tol=25) > 500
 
 
 def test_draw_backgrounds_and_log_axes():
@@ -214,7 +215,7 @@ def test_draw_backgrounds_and_log_axes():
     for x in range(1, 50):
         c.plot(x, 10.0 ** (x / 10))
     c.plot(60, -1)                                    # not drawable on a log axis
-    img = G.draw(g, 400, 300)
+    img = GI.draw(g, 400, 300)
     assert count_color(img, (127, 127, 127), tol=3) > 20000
     assert count_color(img, (0, 0, 255)) > 100
 
@@ -223,7 +224,7 @@ def test_write_images_at_each_graphs_size(tmp_path):
     g1, _ = sine_graph()
     G.graph(width=300, height=200)
     G.gdots(data=[[0, 0], [1, 1]])
-    paths = G.write_images(G.graphs(), tmp_path, "run")
+    paths = GI.write_images(G.graphs(), tmp_path, "run")
     assert [p.name for p in paths] == ["run-graph1.png", "run-graph2.png"]
     from PIL import Image
 
@@ -234,7 +235,7 @@ def test_graph_strip_stacks_graphs():
     g1, c = sine_graph()
     G.graph(title="bars")
     bars = G.gvbars(color=GREEN)
-    strip = G.GraphStrip(G.graphs(), 640)
+    strip = GI.GraphStrip(G.graphs(), 640)
     assert strip.size == (640, 480)
     frames = []
     for i in range(120):
@@ -246,7 +247,7 @@ def test_graph_strip_stacks_graphs():
     assert count_color(frames[-1][:240], (255, 0, 0)) > 300          # top: the curve
     assert count_color(frames[-1][240:], (127, 255, 127), tol=25) > 300   # bottom: bars
     assert not np.array_equal(frames[5], frames[-1])
-    assert G.GraphStrip([], 640).size == (640, 0)
+    assert GI.GraphStrip([], 640).size == (640, 0)
 
 
 # --------------------------------------------------------------------------- widgets
@@ -348,7 +349,7 @@ def make_page(tmp_path: Path, **over) -> tuple[str, Collect]:
     G.reset()
     g = G.graph(width=320, height=200)
     G.gcurve(data=PTS)
-    G.write_images([g], tmp_path, "run")
+    GI.write_images([g], tmp_path, "run")
     W.wtext(text="<i>k</i> = 5", pos=Anchor("title"))
     W.button(bind=set_k, text="Pause")
     W.slider(bind=set_k, min=0, max=10, value=5)

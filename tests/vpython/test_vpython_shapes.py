@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from springscene.view.geometry import HelixFrame
-from springscene.vpython import shapes
+from springscene.vpython import placement, shape_sizes, shapes
 
 UNIT_KINDS = {            # kind: (template, points, triangles, centred)
     "sphere": (shapes.sphere, 842, 1680, True),
@@ -52,7 +52,7 @@ def test_template_counts_and_bounds(kind):
         assert np.allclose(mesh.points.mean(axis=0), 0, atol=1e-9)
     else:
         assert lo[0] == 0 and hi[0] == 1                      # end-anchored: x from 0 to 1
-    assert shapes.is_centred(kind) == centred
+    assert shape_sizes.is_centred(kind) == centred
 
 
 @pytest.mark.parametrize("kind", list(UNIT_KINDS))
@@ -95,7 +95,7 @@ def test_sphere_template_is_pyvistas_sphere():
     assert np.allclose(mesh.normals, mesh.points / np.linalg.norm(mesh.points, axis=1)[:, None])
     # placed with size 2r and the default frame it is the scene's ball of radius r
     r, c = 0.025, np.array([0.1, -0.2, 0.3])
-    pts, _ = shapes.place(mesh, c, shapes.frames([1, 0, 0], [0, 1, 0]), np.full(3, 2 * r))
+    pts, _ = placement.place(mesh, c, placement.frames([1, 0, 0], [0, 1, 0]), np.full(3, 2 * r))
     ball = pv.Sphere(radius=r, center=c, theta_resolution=30, phi_resolution=30)
     assert np.allclose(pts, ball.points, rtol=0, atol=1e-7)
 
@@ -113,15 +113,15 @@ def test_templates_are_cached_and_read_only():
 def test_frames_match_helix_frame_for_first_axis_change(axis):
     hf = HelixFrame()
     R = hf.set_axis(axis)
-    assert np.allclose(shapes.frames(axis, hf.up)[0], R)
-    up = shapes.adjust_up([1, 0, 0], axis, [0, 1, 0])
-    assert np.allclose(shapes.frames(axis, up)[0], R)
+    assert np.allclose(placement.frames(axis, hf.up)[0], R)
+    up = placement.adjust_up([1, 0, 0], axis, [0, 1, 0])
+    assert np.allclose(placement.frames(axis, up)[0], R)
 
 
 def test_frames_vectorised_and_orthonormal():
     rng = np.random.default_rng(1)
     axis, up = rng.normal(size=(50, 3)), rng.normal(size=(50, 3))
-    F = shapes.frames(axis, up)
+    F = placement.frames(axis, up)
     assert F.shape == (50, 3, 3)
     assert np.allclose(np.einsum("mji,mjk->mik", F, F), np.eye(3))
     assert np.allclose(np.linalg.det(F), 1)
@@ -133,7 +133,7 @@ def test_frames_vectorised_and_orthonormal():
 def test_frames_up_parallel_to_axis_uses_vpythons_fallback():
     axis = [[0, 1, 0], [0, -3, 0], [2, 0, 0], [1e-300, 0, 0], [0, 0, 0], [0, 5, 0]]
     up = [[0, 1, 0], [0, 1, 0], [1, 0, 0], [0, 1, 0], [0, 1, 0], [0, 0, 0]]
-    F = shapes.frames(axis, up)
+    F = placement.frames(axis, up)
     assert np.all(np.isfinite(F))
     assert np.allclose(np.linalg.det(F), 1)
     # up parallel: VPython takes up = (1, 0, 0) instead ...
@@ -146,11 +146,11 @@ def test_frames_up_parallel_to_axis_uses_vpythons_fallback():
 
 def test_adjust_up_follows_vpython():
     # perpendicular already: unchanged; half turn: negated; zero axis: unchanged
-    up = shapes.adjust_up([[1, 0, 0]] * 3, [[0, 0, 1], [-1, 0.5, 0], [0, 0, 0]], [0, 1, 0])
+    up = placement.adjust_up([[1, 0, 0]] * 3, [[0, 0, 1], [-1, 0.5, 0], [0, 0, 0]], [0, 1, 0])
     assert np.allclose(up[0], (0, 1, 0))
     assert np.allclose(up[2], (0, 1, 0))
     assert np.isclose(np.dot(up[1], (-1, 0.5, 0)), np.dot((0, 1, 0), (1, 0, 0)) * np.sqrt(1.25))
-    flipped = shapes.adjust_up([0, 1, 0], [0, -1, 0], [0.6, 0.8, 0])
+    flipped = placement.adjust_up([0, 1, 0], [0, -1, 0], [0.6, 0.8, 0])
     assert np.allclose(flipped, (-0.6, -0.8, 0))
 
 
@@ -160,9 +160,9 @@ def test_adjust_up_follows_vpython():
 def test_placed_cylinder_spans_pos_to_pos_plus_axis(axis):
     p, a, r = np.array([0.5, -1.0, 2.0]), np.asarray(axis, dtype=float), 0.2
     L = np.linalg.norm(a)
-    R = shapes.frames(a, shapes.adjust_up([1, 0, 0], a, [0, 1, 0]))
+    R = placement.frames(a, placement.adjust_up([1, 0, 0], a, [0, 1, 0]))
     mesh = shapes.cylinder()
-    pts, normals = shapes.place(mesh, p, R, [L, 2 * r, 2 * r])
+    pts, normals = placement.place(mesh, p, R, [L, 2 * r, 2 * r])
     rel = pts - p
     along = rel @ (a / L)
     assert along.min() >= -1e-12 and along.max() <= L * (1 + 1e-12)
@@ -177,10 +177,10 @@ def test_placed_cylinder_spans_pos_to_pos_plus_axis(axis):
 def test_box_along_y_has_the_expected_bounds():
     # box(axis=vector(0,2,0), height=0.5, width=0.3): VPython turns up to (-1, 0, 0)
     axis = np.array([0.0, 2.0, 0.0])
-    up = shapes.adjust_up([1, 0, 0], axis, [0, 1, 0])
+    up = placement.adjust_up([1, 0, 0], axis, [0, 1, 0])
     assert np.allclose(up, (-1, 0, 0))
     for u in (up, [0, 1, 0]):                                # and the parallel-up fallback
-        pts, _ = shapes.place(shapes.box(), [1, 1, 1], shapes.frames(axis, u), [2, 0.5, 0.3])
+        pts, _ = placement.place(shapes.box(), [1, 1, 1], placement.frames(axis, u), [2, 0.5, 0.3])
         assert np.allclose(pts.min(axis=0), (0.75, 0, 0.85))
         assert np.allclose(pts.max(axis=0), (1.25, 2, 1.15))
 
@@ -189,9 +189,9 @@ def test_nonuniform_scale_normals_are_the_ellipsoids_gradient():
     rng = np.random.default_rng(3)
     M = 4
     pos, size = rng.normal(size=(M, 3)), rng.uniform(0.2, 3, size=(M, 3))
-    R = shapes.frames(rng.normal(size=(M, 3)), rng.normal(size=(M, 3)))
+    R = placement.frames(rng.normal(size=(M, 3)), rng.normal(size=(M, 3)))
     mesh = shapes.sphere()
-    pts, normals = shapes.place(mesh, pos, R, size)
+    pts, normals = placement.place(mesh, pos, R, size)
     n = len(mesh.points)
     for m in range(M):
         w = pts[m * n:(m + 1) * n]
@@ -206,19 +206,19 @@ def test_nonuniform_scale_normals_are_the_ellipsoids_gradient():
 def test_place_broadcasts_and_tiles():
     mesh = shapes.box()
     pos = np.arange(9, dtype=float).reshape(3, 3)
-    pts, normals = shapes.place(mesh, pos, np.eye(3), [1, 1, 1])
+    pts, normals = placement.place(mesh, pos, np.eye(3), [1, 1, 1])
     assert pts.shape == normals.shape == (72, 3)
     assert np.allclose(pts[24:48], mesh.points + pos[1])
-    tris = shapes.tile(mesh.triangles, len(mesh.points), 3)
+    tris = placement.tile(mesh.triangles, len(mesh.points), 3)
     assert tris.shape == (36, 3) and tris.dtype == np.int64
     assert np.array_equal(tris[12:24], mesh.triangles + 24)
-    cells = shapes.vtk_cells(tris)
+    cells = placement.vtk_cells(tris)
     assert cells.shape == (36 * 4,) and np.all(cells[::4] == 3)
     assert np.array_equal(cells.reshape(-1, 4)[:, 1:], tris)
 
 
 def test_zero_size_gives_finite_normals():
-    pts, normals = shapes.place(shapes.sphere(), [0, 0, 0], np.eye(3), [1, 0, 1])
+    pts, normals = placement.place(shapes.sphere(), [0, 0, 0], np.eye(3), [1, 0, 1])
     assert np.all(np.isfinite(pts)) and np.all(np.isfinite(normals))
 
 
@@ -257,7 +257,7 @@ def test_arrow_tip_at_length(length, kw):
 def test_arrow_placed_along_its_axis():
     axis = np.array([0.0, 0.0, -2.0])
     mesh = shapes.arrow(2.0, *shapes.arrow_dims(2.0))
-    pts, _ = shapes.place(mesh, [1, 1, 1], shapes.frames(axis, [0, 1, 0]), [1, 1, 1])
+    pts, _ = placement.place(mesh, [1, 1, 1], placement.frames(axis, [0, 1, 0]), [1, 1, 1])
     assert np.allclose(pts[np.argmin(pts[:, 2])], (1, 1, -1))
 
 
@@ -275,14 +275,14 @@ def test_ring_lies_in_the_yz_plane_at_radius_plus_minus_thickness():
     assert np.isclose(np.abs(p[:, 0]).max(), t)
     assert_winding_outward(mesh)
     # its size, VPython's way: thickness is the cross section's radius
-    size = shapes.ring_size(R, t)
+    size = shape_sizes.ring_size(R, t)
     assert np.allclose(size, (0.2, 3.2, 3.2))
-    assert np.isclose(shapes.radius_from_size("ring", size), R)
-    assert np.isclose(shapes.ring_thickness_from_size(size), t)
+    assert np.isclose(shape_sizes.radius_from_size("ring", size), R)
+    assert np.isclose(shape_sizes.ring_thickness_from_size(size), t)
 
 
 def test_ring_with_axis_z_lies_in_xy():
-    pts, _ = shapes.place(shapes.ring(1, 0.1), [0, 0, 5], shapes.frames([0, 0, 3], [0, 1, 0]), [1, 1, 1])
+    pts, _ = placement.place(shapes.ring(1, 0.1), [0, 0, 5], placement.frames([0, 0, 3], [0, 1, 0]), [1, 1, 1])
     assert np.allclose(np.abs(pts[:, 2] - 5).max(), 0.1)
     assert np.isclose(np.hypot(pts[:, 0], pts[:, 1]).max(), 1.1)
 
@@ -321,24 +321,24 @@ def test_tube_with_scalar_radius_and_no_joints():
 # -- sizes --------------------------------------------------------------------------------
 
 def test_default_sizes_and_radius_rules():
-    assert np.array_equal(shapes.default_size("sphere"), (2, 2, 2))
-    assert np.array_equal(shapes.default_size("cylinder"), (1, 2, 2))
-    assert np.array_equal(shapes.default_size("arrow"), (1, 0.2, 0.2))
-    assert np.array_equal(shapes.default_size("ring"), (0.2, 2.2, 2.2))
-    assert shapes.radius_from_size("sphere", shapes.default_size("sphere")) == 1
-    assert shapes.radius_from_size("helix", shapes.default_size("helix")) == 1
-    assert shapes.radius_from_size("ring", shapes.default_size("ring")) == pytest.approx(1)
-    assert np.array_equal(shapes.size_for_radius("sphere", (2, 2, 2), 0.025), (0.05, 0.05, 0.05))
-    assert np.array_equal(shapes.size_for_radius("cylinder", (3, 2, 2), 0.5), (3, 1, 1))
-    assert np.allclose(shapes.size_for_radius("ring", (0.2, 2.2, 2.2), 2), (0.2, 4.2, 4.2))
-    assert np.allclose(shapes.size_for_ring_thickness((0.2, 2.2, 2.2), 0.3), (0.6, 2.6, 2.6))
+    assert np.array_equal(shape_sizes.default_size("sphere"), (2, 2, 2))
+    assert np.array_equal(shape_sizes.default_size("cylinder"), (1, 2, 2))
+    assert np.array_equal(shape_sizes.default_size("arrow"), (1, 0.2, 0.2))
+    assert np.array_equal(shape_sizes.default_size("ring"), (0.2, 2.2, 2.2))
+    assert shape_sizes.radius_from_size("sphere", shape_sizes.default_size("sphere")) == 1
+    assert shape_sizes.radius_from_size("helix", shape_sizes.default_size("helix")) == 1
+    assert shape_sizes.radius_from_size("ring", shape_sizes.default_size("ring")) == pytest.approx(1)
+    assert np.array_equal(shape_sizes.size_for_radius("sphere", (2, 2, 2), 0.025), (0.05, 0.05, 0.05))
+    assert np.array_equal(shape_sizes.size_for_radius("cylinder", (3, 2, 2), 0.5), (3, 1, 1))
+    assert np.allclose(shape_sizes.size_for_radius("ring", (0.2, 2.2, 2.2), 2), (0.2, 4.2, 4.2))
+    assert np.allclose(shape_sizes.size_for_ring_thickness((0.2, 2.2, 2.2), 0.3), (0.6, 2.6, 2.6))
     with pytest.raises(AttributeError):
-        shapes.radius_from_size("box", (1, 1, 1))
-    assert shapes.helix_wire_radius((1, 0.03, 0.03), 0.003) == 0.0015
-    assert shapes.helix_wire_radius((1, 2, 2)) == 2 / 40
-    assert not shapes.axis_sets_length("sphere") and shapes.axis_sets_length("box")
-    assert not shapes.size_sets_axis("ring") and shapes.size_sets_axis("sphere")
-    assert shapes.SIZE_INDEX == {"length": 0, "height": 1, "width": 2}
+        shape_sizes.radius_from_size("box", (1, 1, 1))
+    assert shape_sizes.helix_wire_radius((1, 0.03, 0.03), 0.003) == 0.0015
+    assert shape_sizes.helix_wire_radius((1, 2, 2)) == 2 / 40
+    assert not shape_sizes.axis_sets_length("sphere") and shape_sizes.axis_sets_length("box")
+    assert not shape_sizes.size_sets_axis("ring") and shape_sizes.size_sets_axis("sphere")
+    assert shape_sizes.SIZE_INDEX == {"length": 0, "height": 1, "width": 2}
 
 
 def test_tube_vertex_points_maps_vertices_to_their_polyline_point():
@@ -352,7 +352,7 @@ def test_tube_vertex_points_maps_vertices_to_their_polyline_point():
 
 def test_adjust_up_broadcasts_one_axis_change_over_many_ups():
     ups = np.array([[0, 1, 0], [0, 0, 1], [0.6, 0.8, 0]])
-    out = shapes.adjust_up([1, 0, 0], [0, -1, 0], ups)
+    out = placement.adjust_up([1, 0, 0], [0, -1, 0], ups)
     assert out.shape == (3, 3)
     assert np.allclose(out[0], (1, 0, 0)) and np.allclose(out[1], (0, 0, 1))
     assert np.allclose(out[2], (0.8, -0.6, 0))
