@@ -188,7 +188,9 @@ def _vpython(args: argparse.Namespace) -> int:
         raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
     result = jobs.vpython(args.program, args.out, duration=args.duration, frames=args.frames,
                           fps=args.fps, backend=args.backend, antialias=not args.draft,
-                          overlays=overlays, page=not args.no_page)
+                          overlays=overlays, page=not args.no_page,
+                          on_dialect=lambda d: print(f"springscene: {args.program}: "
+                                                     f"written for {d.name}", file=sys.stderr))
     for note in result.notes:
         print(f"springscene: note: {note}", file=sys.stderr)
     if not args.quiet:

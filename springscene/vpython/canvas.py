@@ -287,12 +287,23 @@ class canvas:
     def autoscale(self, value) -> None:
         value = bool(value)
         if not value and self._autoscale:
+            self._measure()
             self._range = self._range_now()       # freeze the range autoscale had reached
         self._autoscale = value
 
     @property
     def range(self) -> float:
+        if self._autoscale and self._autoscaled_range is None:
+            self._measure()
         return self._range_now()
+
+    # Set by the runner: autoscale the canvas over the objects it has now (VPython computes
+    # the range when autoscale is turned off or the range is read, not only at a render)
+    _measurer = None
+
+    def _measure(self) -> None:
+        if canvas._measurer is not None and self._objects:
+            canvas._measurer(self)
 
     @range.setter
     def range(self, value) -> None:

@@ -24,7 +24,8 @@ from .. import vpython as vp
 from ..errors import ProgramError, UserError
 from ..outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps, \
     write_png
-from . import runtime, widgets
+from . import dialects, runtime, visual6, widgets
+from .vector import set_lenient
 from .canvas import canvas
 from .draw import Renderer
 from .graph import graphs
@@ -48,6 +49,7 @@ class ProgramResult:
     seconds: float               # wall time
     ended: str                   # "program" (it ended), "duration" or "frames"
     size: tuple[int, int] | None = None                   # the video's (width, height)
+    dialect: str = "VPython 7"                            # what the program was written for
     page: Path | None = None
     images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
     notes: list[str] = field(default_factory=list)        # what ran without a user
@@ -108,22 +110,11 @@ def _user_traceback(exc: BaseException) -> str:
 
 
 def _install_modules():
-    """Make ``import vpython`` (and ``visual``, ``visual.graph``) import springscene's module."""
-    visual = types.ModuleType("visual", "springscene's vpython under VPython 6's name")
-    for name in vp.__all__:
-        setattr(visual, name, getattr(vp, name))
-    visual.display = vp.canvas
-    visual.__all__ = list(vp.__all__) + ["display"]
-    visual_graph = types.ModuleType("visual.graph")
-    for name in vp.__all__:
-        setattr(visual_graph, name, getattr(vp, name))
-    visual_graph.gdisplay = vp.graph
-    visual_graph.__all__ = list(vp.__all__) + ["gdisplay"]
-    visual.graph = visual_graph
-    saved = {name: sys.modules.get(name) for name in ("vpython", "visual", "visual.graph")}
-    sys.modules["vpython"] = vp
-    sys.modules["visual"] = visual
-    sys.modules["visual.graph"] = visual_graph
+    """Make ``import vpython`` import springscene's module, and ``visual`` (with
+    ``visual.graph`` and the rest) VPython 6's names on it (:mod:`.visual6`)."""
+    found = {"vpython": vp, **visual6.modules(vp)}
+    saved = {name: sys.modules.get(name) for name in found}
+    sys.modules.update(found)
     return saved
 
 
@@ -204,16 +195,19 @@ class _Film:
 def run_program(program, out, *, duration: float | None = None, frames: int | None = None,
                 fps: int = DEFAULT_FPS, backend: str = "auto", antialias: bool = True,
                 overlays: tuple[str, ...] = (), page: bool = True,
-                on_frame=None) -> ProgramResult:
+                on_frame=None, on_dialect=None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF) or final still (PNG).
 
     Beside ``out`` go ``page.html`` (the page VPython would show, the video where
     the canvas was), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
-    ``on_frame(index, image)`` is called for each frame taken (for tests).
+    ``on_frame(index, image)`` is called for each frame taken (for tests);
+    ``on_dialect(dialect)`` once the program's dialect is known, before it runs.
     """
     path, out, still, budget, limit = _check_request(program, out, duration, frames, fps,
                                                      overlays)
-    code = _compile(path)
+    code, dialect = _compile(path)
+    if on_dialect is not None:
+        on_dialect(dialect)
     vp.reset()
     start = time.perf_counter()
     images: list[Path] = []
@@ -227,7 +221,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
 
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
-        ended = _execute(code, path, timeline, capture, limit, film)
+        ended = _execute(code, path, dialect, timeline, capture, limit, film)
         try:
             if still:
                 write_png(tmp, film.picture())
@@ -237,7 +231,8 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
             film.close(True)
         result = ProgramResult(out, 1 if still else film.frames, fps, timeline.seconds,
                                time.perf_counter() - start, ended,
-                               size=film.writer.size if film.writer is not None else None)
+                               size=film.writer.size if film.writer is not None else None,
+                               dialect=dialect.name)
     result.images = images + _write_extras(out, result, page, still)
     result.notes = film.notes + widgets.notes()
     if ended == "duration" and duration is None:
@@ -265,19 +260,22 @@ def _check_request(program, out, duration: float | None, frames: int | None, fps
     return path, out, still, budget, limit
 
 
-def _compile(path: Path) -> types.CodeType:
-    """The program's code; a syntax error is reported with the program's own traceback."""
+def _compile(path: Path) -> tuple[types.CodeType, dialects.Dialect]:
+    """The program's code and dialect; a syntax error is reported with the program's own
+    traceback."""
     try:
-        source = path.read_text(encoding="utf-8")
-        return compile(source, str(path), "exec")
+        source = path.read_text(encoding="utf-8-sig")
     except UnicodeDecodeError:
         raise UserError(f"{path}: not a UTF-8 text file") from None
+    dialect = dialects.detect(source)
+    try:
+        return dialects.compile_program(source, str(path), dialect), dialect
     except SyntaxError as exc:
         raise ProgramError(_user_traceback(exc)) from None
 
 
-def _execute(code: types.CodeType, path: Path, timeline: runtime.Timeline, capture,
-             limit: str, film: _Film) -> str:
+def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
+             timeline: runtime.Timeline, capture, limit: str, film: _Film) -> str:
     """Run the program as ``__main__`` on ``timeline``; how it ended ("program" or
     ``limit``). Its modules, ``sys.argv`` and ``sys.path`` are put back afterwards."""
     saved = _install_modules()
@@ -287,10 +285,14 @@ def _execute(code: types.CodeType, path: Path, timeline: runtime.Timeline, captu
     sys.path.insert(0, str(path.resolve().parent))
     runtime.start(timeline)
     runtime.set_capture(capture)
+    canvas._measurer = lambda cv: film.renderer(cv).sync()
+    set_lenient(dialect.kind == "vpython6")
+    names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__}
+    if dialect.kind == "glowscript":
+        names.update(dialects.glowscript_names(vp))
     ended, ok = "program", False
     try:
-        exec(code, {"__name__": "__main__", "__file__": str(path),
-                    "__builtins__": __builtins__})
+        exec(code, names)
         ok = True
     except runtime.Stop:
         ended, ok = limit, True
@@ -306,6 +308,8 @@ def _execute(code: types.CodeType, path: Path, timeline: runtime.Timeline, captu
     finally:
         runtime.start(None)
         runtime.set_capture(None)
+        canvas._measurer = None
+        set_lenient(False)
         sys.argv, sys.path[:] = saved_argv, saved_path
         _restore_modules(saved)
         _forget_program_modules(modules_before, path.resolve().parent)

@@ -54,6 +54,39 @@ _Real = numbers.Real
 _new = object.__new__
 
 
+# VPython 6 programs (``from visual import *``) use tuples, lists and arrays as vectors,
+# and vectors as sequences; set by the runner for those programs only (set_lenient)
+_lenient = False
+
+
+def set_lenient(flag: bool) -> None:
+    """Accept VPython 6's vectors: ``vector()``, ``vector(x, y)``, ``vector(seq)``, a
+    2- or 3-sequence wherever a vector goes, and ``len``/iteration/``abs`` of vectors."""
+    global _lenient
+    _lenient = bool(flag)
+
+
+def _is_triple(value) -> bool:
+    """A 2- or 3-sequence of real numbers (a tuple, list or numpy array)."""
+    if isinstance(value, (str, bytes, vector)):
+        return False
+    try:
+        n = len(value)
+    except TypeError:
+        return False
+    return n in (2, 3) and all(isinstance(c, _Real) for c in value)
+
+
+def _lenient_components(args: tuple) -> tuple[float, float, float]:
+    """VPython 6's vector arguments: none (0, 0, 0), ``x, y`` (z = 0) or one sequence."""
+    if len(args) == 1:
+        if not _is_triple(args[0]):
+            raise TypeError('A vector needs 3 components.')
+        args = tuple(args[0])
+    values = [float(c) for c in args] + [0.0] * (3 - len(args))
+    return values[0], values[1], values[2]
+
+
 def _scalar(other):
     """``other`` as a float if it is a real number (numpy scalars too), else None."""
     if isinstance(other, _Real) and not isinstance(other, vector):
@@ -73,7 +106,30 @@ class vector:
     __slots__ = ('_x', '_y', '_z', '_on_change')
 
     __hash__ = None     # VPython's vectors are mutable and unhashable
-    __iter__ = None     # not iterable, as in VPython (despite __getitem__)
+
+    def __iter__(self):
+        """Not iterable, as in VPython 7 (despite ``__getitem__``); a sequence of 3 for
+        VPython 6 programs (:func:`set_lenient`)."""
+        if not _lenient:
+            raise TypeError("'vector' object is not iterable")
+        return iter((self._x, self._y, self._z))
+
+    def __bool__(self) -> bool:         # always true, as in VPython (not "len() > 0")
+        return True
+
+    def __len__(self) -> int:
+        if not _lenient:
+            raise TypeError("object of type 'vector' has no len()")
+        return 3
+
+    def __abs__(self) -> float:
+        if not _lenient:
+            raise TypeError("bad operand type for abs(): 'vector'")
+        return self.mag
+
+    def astuple(self) -> tuple[float, float, float]:
+        """The components as a tuple (VPython 6)."""
+        return (self._x, self._y, self._z)
 
     def __init__(self, *args) -> None:
         if len(args) == 3:
@@ -85,6 +141,8 @@ class vector:
             self._x = other._x
             self._y = other._y
             self._z = other._z
+        elif _lenient and len(args) in (0, 1, 2):
+            self._x, self._y, self._z = _lenient_components(args)
         else:
             raise TypeError('A vector needs 3 components.')
         self._on_change = None
@@ -222,6 +280,8 @@ class vector:
             v._z = self._z + other._z
             v._on_change = None
             return v
+        if _lenient and _is_triple(other):
+            return self.__add__(vector(*_lenient_components((other,))))
         return NotImplemented
 
     def __sub__(self, other):
@@ -232,6 +292,8 @@ class vector:
             v._z = self._z - other._z
             v._on_change = None
             return v
+        if _lenient and _is_triple(other):
+            return self.__sub__(vector(*_lenient_components((other,))))
         return NotImplemented
 
     def __mul__(self, other):
@@ -265,11 +327,15 @@ class vector:
     def __eq__(self, other) -> bool:
         if isinstance(other, vector):
             return self._x == other._x and self._y == other._y and self._z == other._z
+        if _lenient and _is_triple(other):
+            return self.__eq__(vector(*_lenient_components((other,))))
         return False
 
     def __ne__(self, other) -> bool:
         if isinstance(other, vector):
             return not (self._x == other._x and self._y == other._y and self._z == other._z)
+        if _lenient and _is_triple(other):
+            return not self.__eq__(other)
         return True
 
     def equals(self, other: vector) -> bool:
@@ -417,6 +483,8 @@ def as_vector(value, name: str) -> vector:
             x, y, z = value[0], value[1], value[2]
             if isinstance(x, _Real) and isinstance(y, _Real) and isinstance(z, _Real):
                 return vector(x, y, z)
+        if _lenient and _is_triple(value):
+            return vector(*_lenient_components((value,)))
     raise TypeError(f'{name} must be a vector')
 
 

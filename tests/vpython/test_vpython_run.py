@@ -315,7 +315,9 @@ def test_program_error_is_its_own_traceback_exit_1(tmp_path):
     proc = run_cli("vpython", prog, "--out", out)
     assert proc.returncode == 1
     assert f'File "{prog}", line 4, in <module>' in proc.stderr
-    assert "TypeError" in proc.stderr and "springscene" not in proc.stderr
+    said, traceback = proc.stderr.split("\n", 1)
+    assert said == f"springscene: {prog}: written for VPython 7"
+    assert "TypeError" in traceback and "springscene" not in traceback
     assert not out.exists() and not list(tmp_path.glob(".x.mp4*"))
 
 

@@ -1,0 +1,146 @@
+"""Which VPython a program was written for, and how to run it in CPython.
+
+Three dialects run unmodified:
+
+- **VPython 7** (``from vpython import *``, ``import vpython``): run as it is.
+- **VPython 6** (``from visual import *``, ``import visual``, ``visual.graph``, ...):
+  run as it is, with :mod:`.visual6`'s modules importable and VPython 6's vectors
+  (tuples as vectors, vectors as sequences) turned on for the run.
+- **Web VPython / GlowScript** (first line ``GlowScript 3.2 VPython`` or
+  ``Web VPython 3.2``; no imports): the header is blanked (line numbers stay), the
+  program runs with the names its page gives it (VPython's, math's, ``random()``,
+  ...; :func:`glowscript_names`), and the leniencies of its compiler that CPython
+  lacks are put in: ``"t = " + t`` concatenates a string and a number, as
+  JavaScript does.
+
+:func:`detect` reads the source; :func:`prepare` gives the code to run and the
+names to run it with.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+# GScompiler.js: the first line names the language and version ("GlowScript 3.2 VPython",
+# "Web VPython 3.2"); RapydScript/JavaScript programs are not Python and are refused
+_HEADER = re.compile(r"^\s*(GlowScript|Web\s*VPython)\s+(\d+(?:\.\d+)*)\s*(\w*)", re.I)
+_VISUAL = re.compile(r"^\s*(from\s+(visual|vis)(\.\w+)?\s+import|import\s+(visual|vis)\b)",
+                     re.M)
+_VPYTHON = re.compile(r"^\s*(from\s+vpython(\.\w+)?\s+import|import\s+vpython\b)", re.M)
+
+
+@dataclass
+class Dialect:
+    """What a program was written for: ``kind`` is "vpython7", "vpython6" or
+    "glowscript"; ``name`` is what the user is told ("Web VPython 3.2")."""
+
+    kind: str
+    name: str
+    version: str = ""
+    language: str = "VPython"
+    notes: list[str] = field(default_factory=list)
+
+
+def detect(source: str) -> Dialect:
+    """The dialect of ``source``, from its header line or its imports."""
+    first = next((line for line in source.splitlines() if line.strip()), "")
+    m = _HEADER.match(first)
+    if m:
+        family = "GlowScript" if m.group(1).lower().startswith("glow") else "Web VPython"
+        language = m.group(3) or "VPython"
+        return Dialect("glowscript", f"{family} {m.group(2)}", m.group(2), language)
+    if _VISUAL.search(source) and not _VPYTHON.search(source):
+        return Dialect("vpython6", "VPython 6")
+    return Dialect("vpython7", "VPython 7")
+
+
+def strip_header(source: str) -> str:
+    """The source with its GlowScript header line blanked (so line numbers stay)."""
+    lines = source.splitlines(keepends=True)
+    for i, line in enumerate(lines):
+        if line.strip():
+            if _HEADER.match(line):
+                lines[i] = "\n"
+            break
+    return "".join(lines)
+
+
+def _is_text(node: ast.AST) -> bool:
+    """A node that is certainly a string: a literal, an f-string, ``str(...)``, or a
+    sum with one of those in it."""
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, str)
+    if isinstance(node, ast.JoinedStr):
+        return True
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        return node.func.id in ("str", "repr", "format")
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        return _is_text(node.left) or _is_text(node.right)
+    return False
+
+
+class _TextPlus(ast.NodeTransformer):
+    """``"a" + x`` → ``__gs_add__("a", x)``: JavaScript's ``+`` joins a string and a
+    number; CPython raises. Only sums with a string in them are touched, so the
+    arithmetic of the program runs at full speed."""
+
+    def visit_BinOp(self, node: ast.BinOp) -> ast.AST:
+        self.generic_visit(node)
+        if isinstance(node.op, ast.Add) and (_is_text(node.left) or _is_text(node.right)):
+            call = ast.Call(func=ast.Name("__gs_add__", ast.Load()),
+                            args=[node.left, node.right], keywords=[])
+            return ast.copy_location(call, node)
+        return node
+
+    def visit_AugAssign(self, node: ast.AugAssign) -> ast.AST:
+        self.generic_visit(node)
+        if isinstance(node.op, ast.Add) and _is_text(node.value) and \
+                isinstance(node.target, ast.Name):
+            value = ast.Call(func=ast.Name("__gs_add__", ast.Load()),
+                             args=[ast.Name(node.target.id, ast.Load()), node.value],
+                             keywords=[])
+            return ast.copy_location(ast.Assign(targets=[node.target], value=value), node)
+        return node
+
+
+def js_text(value: Any) -> str:
+    """A value as JavaScript's ``+`` writes it into a string (``1.0`` → ``"1"``)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, float) and value.is_integer() and abs(value) < 1e21:
+        return str(int(value))
+    return str(value)
+
+
+def gs_add(a: Any, b: Any) -> Any:
+    """``a + b`` as GlowScript does it: text joined to anything, else Python's ``+``."""
+    if isinstance(a, str) and not isinstance(b, str):
+        return a + js_text(b)
+    if isinstance(b, str) and not isinstance(a, str):
+        return js_text(a) + b
+    return a + b
+
+
+def transform(tree: ast.Module) -> ast.Module:
+    """The GlowScript leniencies CPython lacks, put into a parsed program."""
+    tree = _TextPlus().visit(tree)
+    return ast.fix_missing_locations(tree)
+
+
+def compile_program(source: str, filename: str, dialect: Dialect):
+    """The program's code object for ``dialect`` (a ``SyntaxError`` is the program's)."""
+    if dialect.kind != "glowscript":
+        return compile(source, filename, "exec")
+    tree = ast.parse(strip_header(source), filename, "exec")
+    return compile(transform(tree), filename, "exec")
+
+
+def glowscript_names(vp) -> dict[str, Any]:
+    """The names a Web VPython page gives a program that imports nothing: VPython's
+    (``from vpython import *``), and the helpers this module puts in its code."""
+    names = {name: getattr(vp, name) for name in vp.__all__}
+    names["__gs_add__"] = gs_add
+    return names
