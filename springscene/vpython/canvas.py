@@ -153,6 +153,33 @@ class _Mouse:
     def project(self, normal=None, point=None, d=None):
         return vector(self._cv.center)
 
+    # VPython 6's polling: nobody clicks, so a wait ends one frame later, counts stay 0
+    clicked = events = 0
+
+    def getclick(self) -> "_Event":
+        widgets.skipped("scene.mouse.getclick(): returned after one frame")
+        runtime.wait()
+        return _Event(self._cv, "click")
+
+    getevent = getclick
+
+    def peekevent(self) -> None:
+        return None
+
+
+class _Keyboard:
+    """VPython 6's ``scene.kb``: no keys are ever pressed."""
+
+    keys = 0
+
+    def __init__(self, cv: "canvas") -> None:
+        self._cv = cv
+
+    def getkey(self) -> str:
+        widgets.skipped("scene.kb.getkey(): returned '' after one frame")
+        runtime.wait()
+        return ""
+
 
 class _Event:
     """What ``waitfor`` returns: an event that no user made."""
@@ -194,6 +221,7 @@ class canvas:
         self.align = "none"
         self.camera = _Camera(self)
         self.mouse = _Mouse(self)
+        self.kb = _Keyboard(self)
         self.title_anchor = _Anchor("title")
         self.caption_anchor = _Anchor("caption")
         self._autoscaled_range = None       # the renderer's last autoscale result

@@ -220,15 +220,62 @@ class _PointList(_Base):
 
 
 class curve(_PointList):
-    """A polyline; radius 0 draws a thin line, radius > 0 a tube."""
+    """A polyline; radius 0 draws a thin line, radius > 0 a tube.
+
+    Its points are placed as GlowScript's curve shader places them
+    (``shaders/curve_render_vertex.shader``): ``origin + R (size * p)``, where the
+    columns of ``R`` are ``norm(axis)``, ``norm(up)`` and their cross product; by
+    default (axis <1,0,0>, up <0,1,0>, size <1,1,1>) the points are where given.
+    """
 
     _kind = "curve"
 
+    def __init__(self, *args, **kwargs) -> None:
+        self._axis, self._up, self._size = vector(1, 0, 0), vector(0, 1, 0), vector(1, 1, 1)
+        for name in ("axis", "up", "size"):
+            if name in kwargs:
+                object.__setattr__(self, "_" + name, _vec(kwargs.pop(name), name))
+        super().__init__(*args, **kwargs)
+        for v in (self._axis, self._up, self._size):
+            v._on_change = self._touch
+
     origin = property(lambda self: self._origin,
                       lambda self, v: self._set("_origin", _vec(v, "origin")))
+    axis = property(lambda self: self._axis, lambda self, v: self._set("_axis", _vec(v, "axis")))
+    up = property(lambda self: self._up, lambda self, v: self._set("_up", _vec(v, "up")))
+    size = property(lambda self: self._size, lambda self, v: self._set("_size", _vec(v, "size")))
+
+    def rotate(self, angle=None, axis=None, origin=None) -> None:
+        """Turn the curve by ``angle`` about ``axis`` (default its own) through ``origin``
+        (default its own ``origin``), as GlowScript's ``rotate``."""
+        if angle is None:
+            raise TypeError("object.rotate() requires an angle.")
+        if angle == 0:
+            return
+        rotaxis = self._axis if axis is None else _vec(axis, "axis")
+        centre = self._origin if origin is None else _vec(origin, "origin")
+        self.origin = centre + (self._origin - centre).rotate(angle, rotaxis)
+        self.axis = self._axis.rotate(angle, rotaxis)
+        self.up = self._up.rotate(angle, rotaxis)
+
+    def _placement(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """The rotation (columns X, Y, Z) and scale, or None when they change nothing."""
+        if self._axis.equals(vector(1, 0, 0)) and self._up.equals(vector(0, 1, 0)) and \
+                self._size.equals(vector(1, 1, 1)):
+            return None
+        X = np.array(self._axis.hat._xyz())
+        Y = np.array(self._up.hat._xyz())
+        Y = Y - X * (X @ Y)
+        n = np.linalg.norm(Y)
+        Y = Y / n if n > 0 else np.array([0.0, 1.0, 0.0])
+        return np.column_stack([X, Y, np.cross(X, Y)]), np.array(self._size._xyz())
 
     def _arrays(self):
         pos, col, rad = super()._arrays()
+        placed = self._placement()
+        if placed is not None:
+            R, scale = placed
+            pos = (pos * scale) @ R.T
         return pos + self._origin.value, col, rad
 
 

@@ -76,7 +76,7 @@ def _is_text(node: ast.AST) -> bool:
     if isinstance(node, ast.JoinedStr):
         return True
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
-        return node.func.id in ("str", "repr", "format")
+        return node.func.id in ("str", "repr", "format", "__gs_add__")
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
         return _is_text(node.left) or _is_text(node.right)
     return False
@@ -124,23 +124,93 @@ def gs_add(a: Any, b: Any) -> Any:
     return a + b
 
 
+class _IsLiteral(ast.NodeTransformer):
+    """``key is 'left'`` → ``key == 'left'``: RapydScript compiles ``is`` to ``===``,
+    which compares values (the GlowScript docs write key handlers so)."""
+
+    def visit_Compare(self, node: ast.Compare) -> ast.AST:
+        self.generic_visit(node)
+        operands = [node.left, *node.comparators]
+        ops = []
+        for op, left, right in zip(node.ops, operands, operands[1:]):
+            literal = any(isinstance(x, ast.Constant) and x.value is not None
+                          and not isinstance(x.value, bool) for x in (left, right))
+            if literal and isinstance(op, ast.Is):
+                op = ast.Eq()
+            elif literal and isinstance(op, ast.IsNot):
+                op = ast.NotEq()
+            ops.append(op)
+        node.ops = ops
+        return node
+
+
+def _names_loaded(node: ast.AST) -> set[str]:
+    return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)
+            and isinstance(n.ctx, ast.Load)}
+
+
+def _hoistable(node: ast.AST) -> bool:
+    """A top-level ``def`` whose definition needs nothing from the program (no
+    decorators, constant defaults), so that it can run before the code above it."""
+    if not isinstance(node, ast.FunctionDef) or node.decorator_list:
+        return False
+    defaults = node.args.defaults + [d for d in node.args.kw_defaults if d is not None]
+    return all(isinstance(d, ast.Constant) or (isinstance(d, ast.UnaryOp)
+                                              and isinstance(d.operand, ast.Constant))
+               for d in defaults)
+
+
+def hoist_functions(tree: ast.Module) -> ast.Module:
+    """JavaScript hoists function declarations: a GlowScript program may name a function
+    above its ``def`` (``button(bind=start)`` ... ``def start(b):``). Each top-level
+    function used above its definition is also defined at the top."""
+    early: list[ast.stmt] = []
+    for i, node in enumerate(tree.body):
+        if not _hoistable(node):
+            continue
+        used_above = any(node.name in _names_loaded(stmt) for stmt in tree.body[:i])
+        if used_above:
+            early.append(node)
+    if early:
+        tree.body = early + tree.body
+    return tree
+
+
 def transform(tree: ast.Module) -> ast.Module:
     """The GlowScript leniencies CPython lacks, put into a parsed program."""
     tree = _TextPlus().visit(tree)
+    tree = _IsLiteral().visit(tree)
+    tree = hoist_functions(tree)
     return ast.fix_missing_locations(tree)
+
+
+_SPACES = re.compile(r"[\u00a0\u1680\u2000-\u200b\u202f\u205f\u3000\ufeff]")
+
+
+def glowscript_whitespace(source: str) -> str:
+    """GlowScript's reading of indentation: each leading tab or space is one space, and
+    Unicode spaces (pasted from a web page) are plain spaces."""
+    lines = []
+    for line in _SPACES.sub(" ", source).splitlines(keepends=True):
+        body = line.lstrip(" \t")
+        lines.append(" " * (len(line) - len(body)) + body)
+    return "".join(lines)
+
+
+def _parse_glowscript(source: str, filename: str) -> ast.Module:
+    source = strip_header(source)
+    try:
+        return ast.parse(source, filename, "exec")
+    except SyntaxError as first:      # TabError, IndentationError, U+00A0 ...
+        try:
+            return ast.parse(glowscript_whitespace(source), filename, "exec")
+        except SyntaxError:
+            raise first from None
 
 
 def compile_program(source: str, filename: str, dialect: Dialect):
     """The program's code object for ``dialect`` (a ``SyntaxError`` is the program's)."""
     if dialect.kind != "glowscript":
         return compile(source, filename, "exec")
-    tree = ast.parse(strip_header(source), filename, "exec")
-    return compile(transform(tree), filename, "exec")
+    return compile(transform(_parse_glowscript(source, filename)), filename, "exec")
 
-
-def glowscript_names(vp) -> dict[str, Any]:
-    """The names a Web VPython page gives a program that imports nothing: VPython's
-    (``from vpython import *``), and the helpers this module puts in its code."""
-    names = {name: getattr(vp, name) for name in vp.__all__}
-    names["__gs_add__"] = gs_add
-    return names

@@ -20,7 +20,34 @@ import math
 from .base import _Base
 from .checks import UNSUPPORTED, _vec, unsupported
 from .curves import curve, points
-from .vector import vector
+from .vector import is_lenient, vector
+
+class _PosShortcut:
+    """VPython 6's ``obj.x``/``.y``/``.z``: ``obj.pos.x``... in a VPython 6 program; in
+    any other program a plain attribute of the program's own (VPython 7 has none)."""
+
+    def __init__(self, component: str) -> None:
+        self.component = component
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        if is_lenient():
+            return getattr(obj._pos, self.component)
+        try:
+            return obj.__dict__[self.component]
+        except KeyError:
+            raise AttributeError(f"'{type(obj).__name__}' object has no attribute "
+                                 f"'{self.component}'") from None
+
+    def __set__(self, obj, value) -> None:
+        if is_lenient():
+            pos = vector(obj._pos)
+            setattr(pos, self.component, value)
+            obj.pos = pos
+        else:
+            obj.__dict__[self.component] = value
+
 
 class standard(_Base):
     """VPython's ``standardAttributes``: pos, axis, up, size, color, opacity, trails."""
@@ -328,6 +355,7 @@ class standard(_Base):
             self._dirty = True
         return property(get, set_)
 
+    x, y, z = _PosShortcut("x"), _PosShortcut("y"), _PosShortcut("z")
     opacity = _scalar("opacity")
     shininess = _scalar("shininess")
     emissive = _scalar("emissive", bool)

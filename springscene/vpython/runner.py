@@ -24,7 +24,7 @@ from .. import vpython as vp
 from ..errors import ProgramError, UserError
 from ..outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps, \
     write_png
-from . import dialects, runtime, visual6, widgets
+from . import attachments, dialects, glowscript, runtime, visual6, widgets
 from .vector import set_lenient
 from .canvas import canvas
 from .draw import Renderer
@@ -162,6 +162,7 @@ class _Film:
         return shown[0] if shown else canvas.get_selected()
 
     def picture(self) -> np.ndarray:
+        attachments.update()              # attached arrows and trails follow at each render
         if self.shown is None:
             self.shown = self._choose_canvas()
         return self.renderer(self.shown).frame()
@@ -221,6 +222,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
 
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
+        timeline.on_render = attachments.update
         ended = _execute(code, path, dialect, timeline, capture, limit, film)
         try:
             if still:
@@ -289,7 +291,7 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
     set_lenient(dialect.kind == "vpython6")
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__}
     if dialect.kind == "glowscript":
-        names.update(dialects.glowscript_names(vp))
+        names.update(glowscript.names(vp), __gs_add__=dialects.gs_add)
     ended, ok = "program", False
     try:
         exec(code, names)

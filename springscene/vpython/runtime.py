@@ -18,6 +18,9 @@ from typing import Callable
 MAX_DENOMINATOR = 10 ** 9
 
 
+RENDERS_PER_SECOND = 60      # GlowScript draws (and moves attached trails) at 60 Hz
+
+
 class Stop(BaseException):
     """Raised inside the program when the video has all its frames."""
 
@@ -42,6 +45,9 @@ class Timeline:
         self.clock = Fraction(0)
         self.frames = 0
         self.calls = 0
+        self.renders = 0
+        self.on_render: Callable[[], None] | None = None   # at VPython's render rate
+
 
     @property
     def seconds(self) -> float:
@@ -50,6 +56,10 @@ class Timeline:
     def advance(self, span: Fraction) -> None:
         """Show the scene as it is for ``span`` program seconds."""
         end = self.clock + span
+        if self.on_render is not None:       # a browser renders 60 times a second
+            while Fraction(self.renders, RENDERS_PER_SECOND) < end:
+                self.on_render()
+                self.renders += 1
         while Fraction(self.frames, self.fps) < end:
             if self.max_frames is not None and self.frames >= self.max_frames:
                 break
@@ -67,6 +77,11 @@ def start(timeline: Timeline | None) -> None:
     """Make ``timeline`` the clock ``rate`` and ``sleep`` advance (None: no clock)."""
     global _current
     _current = timeline
+
+
+def current() -> Timeline | None:
+    """The clock ``rate`` and ``sleep`` advance now (None outside a run)."""
+    return _current
 
 
 def _span(value, what: str) -> Fraction:

@@ -66,6 +66,11 @@ def set_lenient(flag: bool) -> None:
     _lenient = bool(flag)
 
 
+def is_lenient() -> bool:
+    """True while a VPython 6 program runs (:func:`set_lenient`)."""
+    return _lenient
+
+
 def _is_triple(value) -> bool:
     """A 2- or 3-sequence of real numbers (a tuple, list or numpy array)."""
     if isinstance(value, (str, bytes, vector)):

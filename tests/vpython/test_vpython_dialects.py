@@ -1,0 +1,227 @@
+"""The three dialects: which one a program is written in, GlowScript's header and
+leniencies, VPython 6's names and vectors, and programs of each rendered to pictures."""
+
+from __future__ import annotations
+
+import ast
+import importlib
+import math
+import textwrap
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, run_cli
+from springscene import vpython as vp
+from springscene.vpython import dialects, visual6
+from springscene.vpython.runner import run_program
+from springscene.vpython.vector import vector
+
+PROGRAMS = ROOT / "tests" / "vpython_programs"
+# the module (the package's ``vector`` attribute is the class)
+vector_module = importlib.import_module("springscene.vpython.vector")
+
+
+def write(tmp_path, source: str, name: str = "prog.py"):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source).lstrip("\n"))
+    return path
+
+
+# ---- which dialect -----------------------------------------------------------------------
+
+@pytest.mark.parametrize("first, kind, name", [
+    ("GlowScript 3.2 VPython", "glowscript", "GlowScript 3.2"),
+    ("GlowScript 2.7 VPython", "glowscript", "GlowScript 2.7"),
+    ("Web VPython 3.2", "glowscript", "Web VPython 3.2"),
+    ("  glowscript 3.0 vpython  ", "glowscript", "GlowScript 3.0"),
+    ("from visual import *", "vpython6", "VPython 6"),
+    ("import visual as v", "vpython6", "VPython 6"),
+    ("from visual.graph import *", "vpython6", "VPython 6"),
+    ("from vpython import *", "vpython7", "VPython 7"),
+    ("import vpython", "vpython7", "VPython 7"),
+    ("x = 1", "vpython7", "VPython 7"),
+])
+def test_detect(first, kind, name):
+    d = dialects.detect(f"\n{first}\nsphere()\n")
+    assert (d.kind, d.name) == (kind, name)
+
+
+def test_vpython_import_wins_over_visual():
+    assert dialects.detect("from vpython import *\nimport visual\n").kind == "vpython7"
+
+
+def test_header_is_blanked_and_lines_keep_their_numbers():
+    src = "GlowScript 3.2 VPython\nx = 1\ny = 2\n"
+    out = dialects.strip_header(src)
+    assert out.splitlines() == ["", "x = 1", "y = 2"]
+    assert dialects.strip_header("x = 1\n") == "x = 1\n"
+
+
+# ---- GlowScript's leniencies -------------------------------------------------------------
+
+@pytest.mark.parametrize("a, b, expected", [
+    ("t = ", 3.0, "t = 3"), ("t = ", 2.5, "t = 2.5"), (1, " s", "1 s"),
+    ("ok: ", True, "ok: true"), ("a", "b", "ab"), (2, 3, 5),
+])
+def test_gs_add_joins_text_as_javascript(a, b, expected):
+    assert dialects.gs_add(a, b) == expected
+
+
+def _run_transformed(src: str) -> dict:
+    tree = dialects.transform(ast.parse(textwrap.dedent(src)))
+    names = {"__gs_add__": dialects.gs_add}
+    exec(compile(tree, "<t>", "exec"), names)
+    return names
+
+
+def test_only_sums_with_text_are_rewritten():
+    tree = dialects.transform(ast.parse("a = b + c\nd = 'x' + e + f\n"))
+    calls = [n for n in ast.walk(tree) if isinstance(n, ast.Call)]
+    assert len(calls) == 2                    # ('x' + e) + f: both sums hold text
+    plain = tree.body[0].value
+    assert isinstance(plain, ast.BinOp)       # arithmetic left as it is, at full speed
+
+
+def test_text_plus_number_in_a_program():
+    names = _run_transformed("""
+        t = 1.5
+        s = "t = " + t + " s"
+        n = 2
+        s2 = str(n) + 1
+        s3 = "x"
+        s3 += " = " + 4
+        v = 1 + 2
+    """)
+    assert (names["s"], names["s2"], names["s3"], names["v"]) == ("t = 1.5 s", "21", "x = 4", 3)
+
+
+def test_glowscript_program_needs_no_imports(tmp_path):
+    prog = write(tmp_path, """
+        GlowScript 3.2 VPython
+        ball = sphere(pos=vec(0, 0, 0), radius=0.5, color=color.red)
+        label(pos=ball.pos, text="r = " + ball.radius)
+        print("sqrt(2) = " + sqrt(2), pi > 3, random() < 1)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr.splitlines()[0] == f"springscene: {prog}: written for GlowScript 3.2"
+    assert "sqrt(2) = 1.4142135623730951 True True" in proc.stdout
+
+
+def test_glowscript_syntax_error_names_the_program_line(tmp_path):
+    prog = write(tmp_path, """
+        Web VPython 3.2
+        ball = sphere(
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 1
+    assert f'File "{prog}", line 2' in proc.stderr
+
+
+# ---- VPython 6 -----------------------------------------------------------------------------
+
+@pytest.fixture
+def lenient():
+    vector_module.set_lenient(True)
+    yield
+    vector_module.set_lenient(False)
+
+
+def test_vpython6_vectors(lenient):
+    v = vector(1, 2, 3)
+    assert v + (1, 1, 1) == vector(2, 3, 4) and v - [1, 2, 3] == (0, 0, 0)
+    assert vector() == vector(0, 0, 0) and vector(1, 2) == vector(1, 2, 0)
+    assert vector((4, 5, 6)) == vector(4, 5, 6) and vector(np.array([1.0, 2, 3])) == v
+    assert len(v) == 3 and list(v) == [1, 2, 3] and abs(vector(3, 4, 0)) == 5
+    x, y, z = v
+    assert (x, y, z) == (1, 2, 3) and v.astuple() == (1, 2, 3)
+    assert np.array([v, v]).shape == (2, 3)
+
+
+def test_vpython7_vectors_stay_strict():
+    v = vector(1, 2, 3)
+    with pytest.raises(TypeError):
+        v + (1, 1, 1)
+    with pytest.raises(TypeError):
+        vector(1, 2)
+    with pytest.raises(TypeError):
+        len(v)
+    assert v != (1, 2, 3) and bool(vector(0, 0, 0))
+
+
+def test_vpython6_namespace(lenient):
+    names = visual6.namespace(vp)
+    assert names["sqrt"](4.0) == 2.0 and isinstance(names["sqrt"](4.0), float)
+    assert np.allclose(names["sin"](np.array([0.0, math.pi / 2])), [0, 1])   # arrays too
+    assert names["random"] is np.random and names["arange"] is np.arange
+    assert names["max"] is max if "max" in names else True                    # builtin kept
+    assert "max" not in names and "abs" not in names and "round" not in names
+    assert names["mag"]((3, 4, 0)) == 5 and names["norm"]([0, 2, 0]) == vector(0, 1, 0)
+    assert names["cross"]((1, 0, 0), (0, 1, 0)) == vector(0, 0, 1)
+    assert names["dot"](np.array([1, 2]), np.array([3, 4])) == 11
+    assert names["true"] is True and names["false"] is False
+    assert names["display"] is vp.canvas and names["version"][0] == "6.11"
+    assert names["float_"] is np.float64 and names["Inf"] == math.inf
+
+
+def test_vpython6_modules_import(lenient):
+    mods = visual6.modules(vp)
+    assert {"visual", "visual.graph", "visual.controls", "visual.factorial",
+            "visual.filedialog", "vis"} <= set(mods)
+    assert mods["visual.factorial"].factorial(5) == 120.0
+    assert mods["visual.filedialog"].get_file() is None
+    assert mods["visual.graph"].gdisplay is vp.graph
+
+
+def test_vpython6_program_runs(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        from visual.graph import *
+        scene = display(title="bounce", width=400, height=300, x=0, y=0)
+        ball = sphere(pos=(0, 2, 0), radius=0.3, color=color.red)
+        floor = box(pos=(0, 0, 0), size=(6, 0.1, 2))
+        ball.velocity = vector(1, 0, 0)
+        g = gdisplay(xtitle="t", ytitle="y")
+        f = gcurve(gdisplay=g, color=color.blue)
+        h = ghistogram(bins=arange(0, 3, 0.5), color=color.red)
+        t, dt = 0, 0.01
+        while t < 1:
+            rate(100)
+            ball.velocity.y = ball.velocity.y - 9.8*dt
+            ball.pos = ball.pos + ball.velocity*dt
+            if ball.y < 0.35: ball.velocity.y = abs(ball.velocity.y)
+            f.plot(pos=(t, ball.y))
+            t += dt
+        ball.x += 0.5
+        h.plot(data=[0.1, 0.2, 0.7, 1.2, 2.9])
+        print(mag((3, 4, 0)), ball.pos.x == ball.x, len(ball.pos), sqrt(arange(4))[3])
+        print(h._bars.data)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.mp4")
+    assert proc.returncode == 0, proc.stderr
+    assert f"{prog}: written for VPython 6" in proc.stderr
+    lines = proc.stdout.splitlines()
+    assert lines[0] == "5.0 True 3 1.7320508075688772"
+    assert lines[1] == "[[0.25, 2.0], [0.75, 1.0], [1.25, 1.0], [1.75, 0.0], [2.25, 0.0], " \
+                       "[2.75, 1.0]]"
+
+
+def test_vpython6_leniency_ends_with_the_run(tmp_path):
+    prog = write(tmp_path, "from visual import *\nv = vector(1, 2)\n")
+    run_program(prog, tmp_path / "x.png")
+    assert not vector_module.is_lenient()
+    with pytest.raises(TypeError):
+        vector(1, 2)
+
+
+def test_x_y_z_are_pos_in_vpython6_and_own_attributes_in_vpython7(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        b.x = 5
+        print(b.x, b.pos.x)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.splitlines()[0] == "5 0.0"
