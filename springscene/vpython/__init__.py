@@ -17,7 +17,9 @@ Modules, each importing only those listed before it:
 - meshes and off-screen drawing: :mod:`.placement` (frames, placing copies),
   :mod:`.shape_sizes` (VPython's size rules), :mod:`.shapes` (the meshes of each
   kind), :mod:`.draw` (the renderer), then :mod:`.compounds` (compound, which
-  takes its parts' meshes);
+  takes its parts' meshes, and the surface made once that extrusion and text share);
+- extrusions and 3D text: :mod:`.gears2d` and :mod:`.shapes2d` (the ``shapes`` and
+  ``paths`` libraries), :mod:`.extrusions` (extrusion), :mod:`.text3d` (text);
 - graphs: :mod:`.graph` (the graphs and plotted points), :mod:`.graph_layout` (one
   graph on matplotlib axes), :mod:`.graph_images` (graphs as pictures);
 - :mod:`.page` (the page VPython would show) and :mod:`.runner` (a program to a
@@ -26,57 +28,37 @@ Modules, each importing only those listed before it:
 
 from __future__ import annotations
 
-from . import vmath
+from . import attachments, vmath
+from .attachments import attach_arrow, attach_trail
 from .canvas import canvas, color, distant_light, local_light
 from .checks import UnsupportedError
 from .compounds import compound
 from .curves import curve, points
+from .extrusions import extrusion
 from .graph import gcurve, gdots, ghbars, graph, gvbars
 from .graph import reset as _reset_graphs
 from .graph_images import reset as _forget_graph_figures
 from .labels import label
+from .polygons import quad, triangle, vertex
 from .runtime import rate, sleep
+from .shapes2d import paths, shapes
 from .solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring, simple_sphere,
                      sphere)
+from .text3d import text
+from .textures import bumpmaps, textures
 from .vector import (adjust_axis, adjust_up, comp, cross, diff_angle, dot, hat, mag, mag2,
                      norm, object_rotate, proj, rotate, vec, vector)
 from .widgets import button, checkbox, menu, radio, slider, winput, wtext
 from .widgets import reset as _reset_widgets
+from .widgets import skipped as _skipped
 
 globals().update(vmath.NAMES)
 
 version = ("7.6.5", "springscene")
-textures = None        # replaced below: using one is an UnsupportedError
 
 
-class _Refused:
-    """A VPython name springscene has on purpose but does not do (textures, bump maps)."""
-
-    def __init__(self, name: str) -> None:
-        self._name = name
-
-    def __getattr__(self, attr: str):
-        raise UnsupportedError(f"{self._name}.{attr} is not supported by springscene's vpython "
-                               "(no textures off-screen)")
-
-
-textures = _Refused("textures")
-bumpmaps = _Refused("bumpmaps")
-paths = _Refused("paths")
-
-
-def _refuse(name: str):
-    def refused(*args, **kwargs):
-        raise UnsupportedError(f"{name} is not supported by springscene's vpython")
-    refused.__name__ = name
-    return refused
-
-
-# VPython 7 objects springscene does not draw: named, so a program fails saying which
-REFUSED = ("triangle", "quad", "vertex", "extrusion", "text", "attach_arrow", "attach_trail")
-for _name in REFUSED:
-    globals()[_name] = _refuse(_name)
 scene: canvas        # set by reset()
+GSversion = ["3.2", "glowscript"]
 
 
 def keysdown() -> list:
@@ -84,8 +66,25 @@ def keysdown() -> list:
     return []
 
 
-def get_library(*args, **kwargs) -> None:
-    raise UnsupportedError("get_library is not supported by springscene's vpython")
+def get_library(url, *args, **kwargs) -> None:
+    """A JavaScript library from the web: nothing to load it into here; noted."""
+    _skipped(f"get_library({url!r}): a JavaScript library; not loaded (no browser)")
+
+
+def read_local_file(*args, **kwargs) -> str:
+    """A file the user picks: no user here, so no file; the text is empty (noted)."""
+    _skipped("read_local_file(): no user to pick a file; read as empty text ''")
+    return ""
+
+
+def set_browser(*args, **kwargs) -> None:
+    """Where VPython shows its page: springscene writes the page beside the video."""
+
+
+def attach_light(obj, offset=None, **options):
+    """A local light that follows ``obj`` (at ``obj.pos + offset``) at each render."""
+    return attachments.attach_light(obj, local_light, offset, options.pop("color", None),
+                                    **options)
 
 
 def reset() -> None:
@@ -95,6 +94,7 @@ def reset() -> None:
     _reset_graphs()
     _forget_graph_figures()
     _reset_widgets()
+    attachments.reset()
     scene = canvas()
 
 
@@ -105,7 +105,9 @@ _OURS = ["vector", "vec", "mag", "mag2", "norm", "hat", "dot", "cross", "proj", 
          "ring", "ellipsoid", "curve", "points", "label", "compound", "local_light",
          "distant_light", "graph", "gcurve", "gdots", "gvbars", "ghbars",
          "button", "slider", "menu", "checkbox", "radio", "winput", "wtext",
-         "textures", "bumpmaps", "paths", "keysdown", "version", "get_library", *REFUSED]
+         "vertex", "triangle", "quad", "textures", "bumpmaps", "paths", "shapes",
+         "extrusion", "text", "keysdown", "attach_arrow", "attach_trail", "attach_light",
+         "version", "GSversion", "get_library", "read_local_file", "set_browser"]
 __all__ = list(dict.fromkeys(_OURS + list(vmath.__all__)))
 
 reset()

@@ -11,7 +11,8 @@ moved since the last point.
   pps=)``: a thin curve (radius 0) or world-sized points (radius 0.1 × ``size.y``) in
   the object's colour; ``stop()``, ``start()`` (a new piece of trail) and ``clear()``.
 - ``attach_arrow(obj, "attr", scale=1, color=obj.color, shaftwidth=0.5 × size.y,
-  ...)``: an ``arrow``, with ``stop()`` and ``start()``.
+  ...)``: an ``arrow``, with ``stop()`` and ``start()``;
+- ``attach_light(obj, offset=, color=)``: a ``local_light`` kept at ``obj.pos + offset``.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ from .vector import vector
 
 _trails: list["attach_trail"] = []
 _arrows: list[arrow] = []
+_lights: list = []
 
 
 class attach_trail:
@@ -123,15 +125,30 @@ def _follow(a: arrow) -> None:
         a.visible = False
 
 
+def attach_light(obj, make_light, offset=None, color=None, **options: Any):
+    """A light made by ``make_light`` (a ``local_light``) kept at ``obj.pos + offset``,
+    in the object's colour unless given (GlowScript's ``attach_light``)."""
+    offset = vector(0, 0, 0) if offset is None else vector(offset)
+    light = make_light(pos=obj.pos + offset, color=obj.color if color is None else color,
+                       **options)
+    light._attached = (obj, offset)
+    _lights.append(light)
+    return light
+
+
 def update() -> None:
-    """Bring every attached arrow and trail up to date (called before each frame)."""
+    """Bring every attached arrow, trail and light up to date (called at each render)."""
     for a in _arrows:
         if a._run:
             _follow(a)
     for t in _trails:
         t.update()
+    for light in _lights:
+        obj, offset = light._attached
+        light.pos = obj.pos + offset
 
 
 def reset() -> None:
     _trails.clear()
     _arrows.clear()
+    _lights.clear()

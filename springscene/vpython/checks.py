@@ -2,8 +2,10 @@
 
 A vector argument is copied (so the program's own vector is never linked to the
 object) and anything else is VPython's ``TypeError``; a VPython feature
-springscene does not reproduce (textures, materials, ...) is refused with an
-:class:`UnsupportedError` naming it. Used by the canvas, the objects and curves.
+springscene does not reproduce (frames, materials) is refused with an
+:class:`UnsupportedError` naming it. ``texture`` and ``bumpmap`` are not refused:
+an object keeps them as given (as ``vpython.py`` does) and the renderer draws the
+texture (:mod:`.textures`). Used by the canvas, the objects and curves.
 """
 
 from __future__ import annotations
@@ -11,8 +13,7 @@ from __future__ import annotations
 from .vector import as_vector, vector
 
 # VPython attributes springscene does not draw: refused with a message naming them
-UNSUPPORTED = {"texture": "textures", "bumpmap": "bump maps", "frame": "frames",
-               "material": "materials"}
+UNSUPPORTED = {"frame": "frames", "material": "materials"}
 
 
 class UnsupportedError(AttributeError):

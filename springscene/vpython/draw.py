@@ -6,6 +6,11 @@ numpy pass (:func:`springscene.vpython.placement.place`) into one mesh whose poi
 normals and colours are rewritten in place. A batch none of whose objects changed
 is not touched. Labels are the exception: each is a text actor.
 
+Textured objects are batched per texture (VTK keeps one texture per actor) and
+drawn from GlowScript's textured meshes (:mod:`.textured`, :mod:`.batches`);
+triangles and quads (:mod:`.polygons`) are a kind of their own, coloured,
+lit and textured per vertex.
+
 Lights, camera, autoscale, shading and the title are those of
 :class:`springscene.scene.Scene`, so a VPython program of the wiki scene draws
 what ``springscene render`` draws.
@@ -22,9 +27,9 @@ import numpy as np
 
 from ..view import backend, camera
 from ..view.geometry import HelixTube
-from ..view.scene import (MULTI_SAMPLES, SPECULAR, TITLE_FONT_SIZE, apply_view, grab,
-                     title_color)
-from . import placement, shapes
+from ..view.scene import MULTI_SAMPLES, TITLE_FONT_SIZE, apply_view, grab, title_color
+from . import placement, polygons, shapes, textured, textures
+from .batches import Batch, TextureCache, TexturedBatch
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
 TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
@@ -32,7 +37,6 @@ TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
              "pyramid": (shapes.pyramid, True)}
 # level of detail: (slices, smallest on-screen radius in px that gets them)
 SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
-LINE_WIDTH = 2            # px: a curve of radius 0 (VPython draws a thin line)
 POINT_RADIUS = 2.5        # px: points of radius 0
 _TAGS = re.compile(r"<[^>]*>")
 
@@ -47,101 +51,10 @@ def _rgb(colors: np.ndarray) -> np.ndarray:
     return np.clip(np.rint(np.asarray(colors) * 255), 0, 255).astype(np.uint8)
 
 
-class _Batch:
-    """One actor and mesh holding every object of one kind and look."""
-
-    def __init__(self, plotter, key: tuple, mode: str) -> None:
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
-
-        self.key, self.mode = key, mode
-        self.signature = None
-        self.mesh = pv.PolyData()
-        self.plotter = plotter
-        self.actor = None
-        self.pv = pv
-
-    def set(self, points, normals, colors, cells, signature, style) -> None:
-        """New geometry: in place when the topology (``signature``) is unchanged."""
-        self.empty = False
-        if signature == self.signature and self.actor is not None:
-            self.mesh.points[:] = points
-            self.mesh.GetPoints().Modified()
-            if normals is not None:
-                self.mesh.point_data["Normals"][:] = normals
-                self.mesh.GetPointData().GetNormals().Modified()
-            self.mesh.point_data["rgb"][:] = colors
-            self.mesh.GetPointData().GetArray("rgb").Modified()
-            return
-        pv = self.pv
-        if self.mode == "lines":
-            mesh = pv.PolyData(points, lines=cells)
-        elif self.mode == "points":
-            mesh = pv.PolyData(points)
-        else:
-            mesh = pv.PolyData(points, faces=cells)
-        if normals is not None:
-            mesh.point_data["Normals"] = normals
-            mesh.GetPointData().SetActiveNormals("Normals")
-        mesh.point_data["rgb"] = colors
-        if self.actor is not None:           # the actor keeps its mesh; its content changes
-            self.mesh.shallow_copy(mesh)
-            self.mesh.GetPointData().SetActiveScalars("rgb")
-        else:
-            self.mesh = mesh
-            self.actor = self.plotter.add_mesh(mesh, scalars="rgb", rgb=True,
-                                               smooth_shading=False, show_scalar_bar=False,
-                                               render_points_as_spheres=self.mode == "points")
-            self._style(style)
-        self.signature = signature
-
-    def _style(self, style: dict) -> None:
-        prop = self.actor.GetProperty()
-        prop.SetInterpolationToPhong()
-        prop.SetAmbient(style["ambient"])
-        prop.SetDiffuse(1.0)
-        shininess = style["shininess"]
-        prop.SetSpecular(SPECULAR if shininess > 0 else 0.0)
-        prop.SetSpecularColor(1.0, 1.0, 1.0)
-        prop.SetSpecularPower(max(100 * shininess, 1.0))
-        prop.SetOpacity(style["opacity"])
-        if style["emissive"]:
-            prop.LightingOff()
-        if self.mode == "lines":
-            prop.SetLineWidth(LINE_WIDTH)
-            prop.LightingOff()
-        if self.mode == "points":
-            prop.SetPointSize(style["point_px"])
-            prop.LightingOff()
-
-    empty = False        # nothing to draw (a cleared curve, a zero-length helix)
-
-    def hide(self) -> None:
-        self.empty = True
-        if self.actor is not None:
-            self.actor.SetVisibility(False)
-
-    def show(self) -> None:
-        if self.actor is not None and not self.empty:
-            self.actor.SetVisibility(True)
-
-    def restyle(self, style: dict) -> None:
-        if self.actor is not None:
-            self._style(style)
-
-    def remove(self) -> None:
-        if self.actor is not None:
-            self.plotter.remove_actor(self.actor)
-            self.actor = None
+_Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
 
 
-def _frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """pos, rotation (columns X, Y, Z), size and colour arrays of ``objs``."""
-    pos = np.array([o._pos._xyz() for o in objs], dtype=float)
-    axis = np.array([o._axis._xyz() for o in objs], dtype=float)
-    up = np.array([o._up._xyz() for o in objs], dtype=float)
-    size = np.array([o._size._xyz() for o in objs], dtype=float)
-    color = np.array([o._color._xyz() for o in objs], dtype=float)
-    return pos, placement.frames(axis, up), size, color
+_frames = placement.object_frames   # pos, rotation, size and colour arrays of objects
 
 
 _TEMPLATES: dict = {}
@@ -170,8 +83,15 @@ def sphere_slices(radius_px: float) -> int:
     return SPHERE_LOD[-1][0]
 
 
-def object_mesh(obj):
-    """World points, normals, triangles and RGB (uint8) of one object, any kind."""
+def object_mesh(obj, uv: bool = False):
+    """World points, normals, triangles and RGB (uint8) of one object, any kind.
+
+    With ``uv``, a fifth array: each point's texture coordinates, from GlowScript's
+    textured layouts (zeros for kinds GlowScript does not texture), for a compound
+    that keeps its parts' texpos as GlowScript's does (mesh.js ``merge``).
+    """
+    if uv:
+        return _uv_mesh(obj)
     kind = obj._kind
     if kind in TEMPLATES:
         t = template(kind)
@@ -185,10 +105,25 @@ def object_mesh(obj):
     return _mesh(kind, obj)
 
 
+def _uv_mesh(obj):
+    if obj._kind == "triangle":
+        points, normals, triangles, rgba, uv = polygons.arrays([obj])
+        return points, normals, triangles, rgba[:, :3], uv
+    if textured.has_layout(obj):
+        a = textured.arrays(obj._kind, [obj], textures.TextureSpec("", sides=True))
+        rgb = np.repeat(_rgb([obj._color._xyz()]), len(a["points"]), axis=0)
+        return a["points"], a["normals"], a["triangles"], rgb, a["uv"]
+    points, normals, triangles, rgb = object_mesh(obj)
+    return points, normals, triangles, rgb, np.zeros((len(points), 2))
+
+
 def _mesh(kind: str, obj):
     """World points, normals, triangles and RGB of one object drawn from its own mesh."""
     if kind == "helix":
         return _helix(obj)
+    if kind == "triangle":
+        points, normals, triangles, rgba, _ = polygons.arrays([obj])
+        return points, normals, triangles, rgba[:, :3]
     if kind in ("arrow", "ring", "compound"):
         pos = np.array([obj._pos._xyz()])
         R = placement.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
@@ -279,6 +214,7 @@ class Renderer:
         self._background = None
         self._autoscale = camera.Autoscaler()
         self._bounds: dict[tuple, np.ndarray] = {}
+        self._textures = TextureCache()
         self.view: camera.View | None = None
         self._pixels = None
 
@@ -304,18 +240,14 @@ class Renderer:
             if kind == "label":
                 labels.append(obj)
                 continue
-            if kind in ("curve", "points"):
-                key = self._point_key(obj)
-            else:
-                key = (kind, float(obj._opacity), float(obj._shininess), bool(obj._emissive))
-            groups[key].append(obj)
+            groups[self._key(obj)].append(obj)
         for key in [k for k in self._batches if k not in groups]:   # e.g. a faded opacity
             self._batches.pop(key).remove()
             self._bounds.pop(key, None)
         for key, objs in groups.items():
             batch = self._batches.get(key)
             if batch is None:
-                batch = self._batches[key] = _Batch(self.plotter, key, self._mode(key))
+                batch = self._batches[key] = self._new_batch(key)
             members = tuple(map(id, objs))
             if batch.signature is not None and getattr(batch, "members", None) == members \
                     and not any(o._dirty for o in objs):
@@ -337,6 +269,31 @@ class Renderer:
         self._sync_title()
         self._place_camera()
         self._sync_labels(labels)
+
+    def _key(self, obj) -> tuple:
+        """The batch an object is drawn in: its kind and look (and texture)."""
+        kind = obj._kind
+        if kind in ("curve", "points"):
+            return self._point_key(obj)
+        if kind == "triangle":
+            return ("triangle", *polygons.look(obj), self._texture_spec(obj._texture))
+        key = (kind, float(obj._opacity), float(obj._shininess), bool(obj._emissive))
+        spec = textured.spec_for(obj)
+        if spec is not None and textures.load(spec) is not None:
+            return ("textured", *key, spec)
+        return key
+
+    @staticmethod
+    def _texture_spec(value) -> textures.TextureSpec | None:
+        spec = textures.spec_of(value)
+        return spec if spec is not None and textures.load(spec) is not None else None
+
+    def _new_batch(self, key: tuple) -> _Batch:
+        spec = key[-1] if key[0] in ("textured", "triangle") else None
+        if spec is None:
+            return _Batch(self.plotter, key, self._mode(key))
+        texture = self._textures.get(spec.source, textures.load(spec))
+        return TexturedBatch(self.plotter, key, texture)
 
     @staticmethod
     def _point_key(obj) -> tuple:
@@ -363,6 +320,10 @@ class Renderer:
             style.update(shininess=key[1], emissive=key[2])
         elif key[0] == "points":
             style["point_px"] = 2 * key[1]
+        elif key[0] == "textured":
+            style.update(opacity=key[2], shininess=key[3], emissive=key[4])
+        elif key[0] == "triangle":             # opacity is each vertex's (RGBA)
+            style.update(shininess=key[1], emissive=key[2])
         return style
 
     # -- geometry per kind ---------------------------------------------------------------
@@ -374,6 +335,13 @@ class Renderer:
             self._draw_templates(batch, key, objs, style)
         elif kind in ("lines", "points"):
             self._draw_points(batch, key, objs, style)
+        elif kind == "textured":
+            a = textured.arrays(key[1], objs, key[-1])
+            batch.set_parts(a["points"], a["normals"], a["rgb"], a["uv"], a["triangles"],
+                            a["covered"], a["signature"], style)
+            self._bounds[key] = a["bounds"]
+        elif kind == "triangle":
+            self._draw_polygons(batch, key, objs, style)
         else:
             meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
@@ -395,6 +363,18 @@ class Renderer:
         centre = pos + (R[:, :, 0] * size[:, :1] / 2 if anchored else 0)
         half = half[:, :, 0]
         self._bounds[key] = np.stack([centre - half, centre + half], axis=1)
+
+    def _draw_polygons(self, batch, key, objs, style) -> None:
+        """Triangles and quads: each vertex's own position, normal, colour and opacity."""
+        points, normals, triangles, rgba, uv = polygons.arrays(objs)
+        signature = ("poly", len(points), hash(triangles.tobytes()))
+        if key[-1] is not None:
+            batch.set_parts(points, normals, rgba, uv, triangles,
+                            np.ones(len(triangles), dtype=bool), signature, style)
+        else:
+            cells = None if signature == batch.signature else placement.vtk_cells(triangles)
+            batch.set(points, normals, rgba, cells, signature, style)
+        self._bounds[key] = np.stack([points, points], axis=1)
 
     def _sphere_slices(self, pos: np.ndarray, size: np.ndarray) -> int:
         """Level of detail for a batch of spheres: enough for the largest on screen."""

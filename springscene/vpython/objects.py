@@ -356,6 +356,7 @@ class standard(_Base):
         return property(get, set_)
 
     x, y, z = _PosShortcut("x"), _PosShortcut("y"), _PosShortcut("z")
+    texture = bumpmap = None          # none until given (:mod:`.textures` reads them)
     opacity = _scalar("opacity")
     shininess = _scalar("shininess")
     emissive = _scalar("emissive", bool)
@@ -388,7 +389,7 @@ class standard(_Base):
         return {"pos": self._pos, "color": self._color, "opacity": self._opacity,
                 "size": self._size, "axis": self._axis, "up": self._up,
                 "shininess": self._shininess, "emissive": self._emissive,
-                "canvas": self._canvas}
+                "canvas": self._canvas, "texture": self.texture}
 
     def clone(self, **args):
         """A copy of the object (VPython copies the drawn attributes, not the program's own)."""

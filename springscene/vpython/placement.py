@@ -1,6 +1,7 @@
 """Triangle meshes and where their copies go: VPython's frame rule, many objects at a time.
 
-:class:`Mesh` is a template's vertices, normals and triangles; :func:`frames` gives
+:class:`Mesh` is a template's vertices, normals, triangles (and texture
+coordinates, for the textured templates); :func:`frames` gives
 each object's local frame from its ``axis`` and ``up``; :func:`place` puts M
 copies of a template into the world with one batched matrix product; :func:`tile`
 and :func:`vtk_cells` give the triangles of the copies. The templates themselves
@@ -31,11 +32,14 @@ import numpy as np
 
 
 class Mesh(NamedTuple):
-    """A triangle mesh: vertices, unit vertex normals, outward counter-clockwise triangles."""
+    """A triangle mesh: vertices, unit vertex normals, outward counter-clockwise triangles,
+    and, for a textured template, each vertex's texture coordinates (VPython's ``texpos``:
+    u to the right and v up the picture, both 0..1)."""
 
     points: np.ndarray     # (n, 3) float64
     normals: np.ndarray    # (n, 3) float64, unit
     triangles: np.ndarray  # (f, 3) int64
+    uv: np.ndarray | None = None   # (n, 2) float64, or None: not textured
 
 
 def _unit_rows(v: np.ndarray) -> np.ndarray:
@@ -154,6 +158,16 @@ def place(mesh: Mesh, pos, R, size) -> tuple[np.ndarray, np.ndarray]:
     return points.reshape(-1, 3), normals.reshape(-1, 3)
 
 
+def object_frames(objs) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """pos, frame (columns X, Y, Z), size and colour arrays of VPython objects, (M, ...)."""
+    pos = np.array([o._pos._xyz() for o in objs], dtype=float)
+    axis = np.array([o._axis._xyz() for o in objs], dtype=float)
+    up = np.array([o._up._xyz() for o in objs], dtype=float)
+    size = np.array([o._size._xyz() for o in objs], dtype=float)
+    color = np.array([o._color._xyz() for o in objs], dtype=float)
+    return pos, frames(axis, up), size, color
+
+
 def tile(triangles, n_points: int, M: int) -> np.ndarray:
     """Triangle indices (M * f, 3) of M copies of a mesh of ``n_points`` points, copy after copy."""
     triangles = np.asarray(triangles, dtype=np.int64)
@@ -169,4 +183,4 @@ def vtk_cells(triangles) -> np.ndarray:
 
 
 
-__all__ = ["Mesh", "frames", "adjust_up", "place", "tile", "vtk_cells"]
+__all__ = ["Mesh", "frames", "adjust_up", "place", "object_frames", "tile", "vtk_cells"]

@@ -289,7 +289,8 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
     runtime.set_capture(capture)
     canvas._measurer = lambda cv: film.renderer(cv).sync()
     set_lenient(dialect.kind == "vpython6")
-    names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__}
+    names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
+             "input": widgets.program_input}
     if dialect.kind == "glowscript":
         names.update(glowscript.names(vp), __gs_add__=dialects.gs_add)
     ended, ok = "program", False

@@ -14,7 +14,9 @@ VPython facts used (VPython 7, ``vpython/vpython-jupyter``; GlowScript,
 - ``lib/glow/mesh.js``: ``makeCube`` (24 vertices), ``makeCylinder`` (50
   sides), ``makeCone`` (200 sides), ``makePyramid``, ``makeRing`` (60 cross
   sections of 20 sides), ``makeCurveSegment`` (16-sided open tube with a
-  hemisphere on its far end).
+  hemisphere on its far end); for textured objects, the same functions' vertex
+  layouts and ``texpos`` (``textured_*``, :data:`TEXTURED`, ``ring(uv=True)``),
+  and ``makeSphere(0.5, 30)``'s UV sphere.
 
 VPython's size rules (default sizes, radius and size) are :mod:`.shape_sizes`.
 """
@@ -38,15 +40,17 @@ CAP_RINGS = 4           # latitude rings of a curve's hemispherical joint (ours)
 
 # -- templates ----------------------------------------------------------------------------
 
-def _mesh(points, normals, triangles) -> Mesh:
+def _mesh(points, normals, triangles, uv=None) -> Mesh:
     return Mesh(np.ascontiguousarray(points, dtype=float),
                 np.ascontiguousarray(_unit_rows(np.asarray(normals, dtype=float))),
-                np.ascontiguousarray(triangles, dtype=np.int64).reshape(-1, 3))
+                np.ascontiguousarray(triangles, dtype=np.int64).reshape(-1, 3),
+                None if uv is None else np.ascontiguousarray(uv, dtype=float).reshape(-1, 2))
 
 
 def _frozen(mesh: Mesh) -> Mesh:
     for a in mesh:
-        a.setflags(write=False)
+        if a is not None:
+            a.setflags(write=False)
     return mesh
 
 
@@ -233,7 +237,7 @@ def _grid_triangles(rows: int, cols: int, wrap_rows: bool) -> np.ndarray:
 
 
 def ring(radius: float, thickness: float, sides: int = RING_SIDES,
-         sections: int = RING_SECTIONS) -> Mesh:
+         sections: int = RING_SECTIONS, uv: bool = False) -> Mesh:
     """A ring in local lengths, centred on ``pos``, lying in the local YZ plane (normal = axis).
 
     ``radius`` is to the tube's centre line and ``thickness`` is VPython's: the
@@ -241,17 +245,35 @@ def ring(radius: float, thickness: float, sides: int = RING_SIDES,
     diameter of the cross section"), so the ring spans ``radius +- thickness``
     from its centre. mesh.js ``makeRing``: 60 cross sections of 20 sides.
     Place with size (1, 1, 1). ``sides * sections`` points, twice as many triangles.
+
+    With ``uv``, mesh.js's textured layout: ``(sections + 1) x (sides + 1)``
+    points (the seams doubled), texture u = c / 60 around the ring from the
+    back (-z), v = i / 20 around the tube from its inside (``texpos.push(c/NC, i/N)``).
     """
-    phi = 2 * np.pi * np.arange(sections) / sections          # around the ring
-    psi = np.pi + 2 * np.pi * np.arange(sides) / sides        # around the tube; seam inside
+    n_phi, n_psi = (sections + 1, sides + 1) if uv else (sections, sides)
+    phi = 2 * np.pi * np.arange(n_phi) / sections             # around the ring
+    psi = np.pi + 2 * np.pi * np.arange(n_psi) / sides        # around the tube; seam inside
     # e(phi): unit vector from the centre, starting at -z as mesh.js ("seam to the back")
-    e = np.stack([np.zeros(sections), np.sin(phi), -np.cos(phi)], axis=-1)[:, None, :]
+    e = np.stack([np.zeros(n_phi), np.sin(phi), -np.cos(phi)], axis=-1)[:, None, :]
     x = np.array([1.0, 0, 0])
     normals = np.cos(psi)[None, :, None] * e + np.sin(psi)[None, :, None] * x
     points = radius * e + thickness * normals
-    # d/dphi x d/dpsi is along the outward normal, so rows = phi, columns = psi
-    triangles = _grid_triangles(sections, sides, wrap_rows=True)
-    return _mesh(points.reshape(-1, 3), normals.reshape(-1, 3), triangles)
+    if not uv:
+        # d/dphi x d/dpsi is along the outward normal, so rows = phi, columns = psi
+        triangles = _grid_triangles(sections, sides, wrap_rows=True)
+        return _mesh(points.reshape(-1, 3), normals.reshape(-1, 3), triangles)
+    c, i = np.meshgrid(np.arange(n_phi) / sections, np.arange(n_psi) / sides, indexing="ij")
+    return _mesh(points.reshape(-1, 3), normals.reshape(-1, 3), _open_grid(n_phi, n_psi),
+                 np.column_stack([c.ravel(), i.ravel()]))
+
+
+def _open_grid(rows: int, cols: int) -> np.ndarray:
+    """mesh.js's bands: (a, below a, below a + 1), (a, below a + 1, a + 1), no wrapping."""
+    i = np.arange(rows - 1)[:, None]
+    j = np.arange(cols - 1)[None, :]
+    a = i * cols + j
+    b, d, c = a + cols, a + cols + 1, a + 1
+    return np.stack([np.stack([a, b, d], -1), np.stack([a, d, c], -1)], axis=2).reshape(-1, 3)
 
 
 def tube(points, radius, sides: int = CURVE_SIDES, joints: bool = True,
@@ -339,6 +361,135 @@ def _cap_triangles(sides: int) -> np.ndarray:
     return np.vstack([bands, fan])
 
 
+# -- textured templates: GlowScript's vertex layouts and texpos (lib/glow/mesh.js) ---------
+
+TEXTURED_SPHERE_SLICES = 30   # WebGLRenderer.js: Mesh.makeSphere(0.5, 30)
+
+
+@functools.cache
+def textured_sphere(slices: int = TEXTURED_SPHERE_SLICES) -> Mesh:
+    """mesh.js ``makeSphere``: a UV sphere of ``(N + 1) x (N + 1)`` points, seam and poles doubled.
+
+    Latitude i (0 at the +y pole) and longitude j: ``(x, y, z) = R (-sin t sin p,
+    cos t, -sin t cos p)``, t = i pi / N, p = 2 pi j / N, so the seam (u = 0 and
+    1) is at -z and u = 0.25, 0.5, 0.75 face -x, +z, +x; ``texpos = (j/N, 1 - i/N)``
+    puts the picture's top at the +y pole. An Earth map (longitude -180 at its
+    left edge) shows longitude 0 towards +z and north at +y, east to the right.
+    """
+    n = slices
+    t = np.pi * np.arange(n + 1) / n
+    p = 2 * np.pi * np.arange(n + 1) / n
+    T, P = np.meshgrid(t, p, indexing="ij")
+    points = 0.5 * np.stack([-np.sin(T) * np.sin(P), np.cos(T), -np.sin(T) * np.cos(P)], -1)
+    J, I = np.meshgrid(np.arange(n + 1) / n, np.arange(n + 1) / n)
+    uv = np.stack([J, 1 - I], -1)                            # texpos(j/Nlong, 1 - i/Nlat)
+    return _frozen(_mesh(points.reshape(-1, 3), points.reshape(-1, 3), _open_grid(n + 1, n + 1),
+                         uv.reshape(-1, 2)))
+
+
+@functools.cache
+def textured_box() -> Mesh:
+    """:func:`box` with mesh.js ``makeCube``'s texpos: (0,1), (0,0), (1,0), (1,1) on every face."""
+    b = box()
+    uv = np.tile([[0, 1], [0, 0], [1, 0], [1, 1]], (6, 1))
+    return _frozen(_mesh(b.points, b.normals, b.triangles, uv))
+
+
+@functools.cache
+def textured_pyramid() -> Mesh:
+    """:func:`pyramid` with mesh.js ``makePyramid``'s texpos (the four sides share one picture)."""
+    p = pyramid()
+    uv = [[1, 1], [0, 1], [0, 0], [1, 0],                       # base (left)
+          [0, 0], [0.25, 0], [0.125, 1], [1, 0], [0.75, 0], [0.875, 1],
+          [0.5, 0], [0.75, 0], [0.625, 1], [0.25, 0], [0.5, 0], [0.375, 1]]
+    return _frozen(_mesh(p.points, p.normals, p.triangles, uv))
+
+
+@functools.cache
+def textured_cylinder(sides: int = CYLINDER_SIDES) -> Mesh:
+    """mesh.js ``makeCylinder``: centres, then per side k: left-cap, side, right-cap, side points.
+
+    texpos: the caps ``(0.5 (1 +- z/R), 0.5 + 0.5 y/R)`` (upright seen from
+    outside); the side u = 0 at ``pos`` and 1 at the far end, v going 0 -> 1
+    over the first half turn from -y and back 1 -> 0 over the second (no seam).
+    """
+    y, z = _circle(sides)
+    k = np.arange(sides)
+    v = np.where(k < sides / 2, k / (sides / 2), 1 - (k - sides / 2) / (sides / 2))
+    zero, one = np.zeros(sides), np.ones(sides)
+    quad_p = np.stack([np.column_stack([zero, y, z]), np.column_stack([zero, y, z]),
+                       np.column_stack([one, y, z]), np.column_stack([one, y, z])], 1)
+    radial = np.column_stack([zero, y, z])
+    quad_n = np.stack([np.tile([-1.0, 0, 0], (sides, 1)), radial,
+                       np.tile([1.0, 0, 0], (sides, 1)), radial], 1)
+    quad_uv = np.stack([np.column_stack([0.5 * (1 + 2 * z), 0.5 + y]), np.column_stack([zero, v]),
+                        np.column_stack([0.5 * (1 - 2 * z), 0.5 + y]), np.column_stack([one, v])], 1)
+    left, side0, right, side1 = (2 + 4 * k + m for m in range(4))
+    k1 = (k + 1) % sides
+    triangles = np.vstack([_fan(0, left), np.column_stack([side0, side1, side1[k1]]),
+                           np.column_stack([side0, side1[k1], side0[k1]]),
+                           np.column_stack([np.ones(sides, int), right[k1], right])])
+    return _frozen(_mesh(np.vstack([[[0, 0, 0], [1, 0, 0]], quad_p.reshape(-1, 3)]),
+                         np.vstack([[[-1, 0, 0], [1, 0, 0]], quad_n.reshape(-1, 3)]),
+                         triangles, np.vstack([[[0.5, 0.5], [0.5, 0.5]], quad_uv.reshape(-1, 2)])))
+
+
+@functools.cache
+def textured_cone(sides: int = CONE_SIDES) -> Mesh:
+    """mesh.js ``makeCone``: base centre, then per k = 0..N a base-rim, side-rim and apex point.
+
+    The rim starts at -z and turns towards -y; texpos: base ``(0.5 (1 + z/R),
+    0.5 (1 + y/R))``, side u = 1 - k/N (v 0 at the rim, 1 at the apex).
+    """
+    k = np.arange(sides + 1)
+    theta = 2 * np.pi * k / sides
+    y, z = -0.5 * np.sin(theta), -0.5 * np.cos(theta)
+    ym, zm = -0.5 * np.sin(theta + np.pi / sides), -0.5 * np.cos(theta + np.pi / sides)
+    zero = np.zeros(sides + 1)
+    rim = np.column_stack([zero, y, z])
+    apex = np.tile([1.0, 0, 0], (sides + 1, 1))
+    points = np.stack([rim, rim, apex], 1).reshape(-1, 3)
+    normals = np.stack([np.tile([-1.0, 0, 0], (sides + 1, 1)),
+                        np.column_stack([np.ones(sides + 1), 4 * y, 4 * z]),
+                        np.column_stack([np.ones(sides + 1), 4 * ym, 4 * zm])], 1).reshape(-1, 3)
+    u = 1 - k / sides
+    uv = np.stack([np.column_stack([0.5 * (1 + 2 * z), 0.5 * (1 + 2 * y)]),
+                   np.column_stack([u, zero]), np.column_stack([u, zero + 1])], 1).reshape(-1, 2)
+    i = 1 + 3 * np.arange(sides)
+    triangles = np.vstack([np.column_stack([np.zeros(sides, int), i, i + 3]),
+                           np.column_stack([i + 1, i + 2, i + 4])])
+    return _frozen(_mesh(np.vstack([[0, 0, 0], points]), np.vstack([[-1, 0, 0], normals]),
+                         triangles, np.vstack([[0.5, 0.5], uv])))
+
+
+TEXTURED = {            # textured unit templates: kind -> function making it
+    "sphere": textured_sphere,
+    "box": textured_box,
+    "cylinder": textured_cylinder,
+    "cone": textured_cone,
+    "pyramid": textured_pyramid,
+}
+
+SIDES, LEFT, RIGHT = 0, 1, 2
+
+
+def texture_parts(mesh: Mesh, kind: str) -> np.ndarray:
+    """Each vertex's place for ``texture={'place': ...}``: SIDES, LEFT or RIGHT.
+
+    GlowScript's object shaders (render_vertex.shader): a vertex whose template
+    normal is exactly (-1, 0, 0) is *left*, (1, 0, 0) *right*, any other a *side*.
+    A sphere's and a ring's are all sides (mesh.js gives none of theirs an exact
+    +-x normal; the ring's normal attribute has x = 0), and so are a compound's
+    (its merged normals are scaled by its size, mesh.js ``adjust``).
+    """
+    parts = np.full(len(mesh.points), SIDES, dtype=np.int8)
+    if kind not in ("sphere", "ring", "compound"):
+        nx = mesh.normals[:, 0]
+        parts[nx == -1.0] = LEFT
+        parts[nx == 1.0] = RIGHT
+    return parts
+
+
 TEMPLATES = {           # unit templates: kind -> function making it
     "sphere": sphere,
     "ellipsoid": sphere,
@@ -356,6 +507,7 @@ def template(kind: str) -> Mesh:
 
 __all__ = [
     "Mesh", "sphere", "box", "cylinder", "cone", "pyramid", "arrow", "arrow_dims", "ring",
-    "tube", "tube_vertex_points", "template", "SPHERE_SLICES", "CYLINDER_SIDES",
+    "tube", "tube_vertex_points", "template", "SPHERE_SLICES", "TEXTURED", "texture_parts",
+    "textured_sphere", "textured_box", "textured_cylinder", "textured_cone", "textured_pyramid", "CYLINDER_SIDES",
     "CONE_SIDES", "RING_SECTIONS", "RING_SIDES", "CURVE_SIDES",
 ]

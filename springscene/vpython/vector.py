@@ -25,14 +25,12 @@ What matches VPython (checked against its sources):
 
 Additions for springscene (VPython programs cannot tell):
 
-- ``v[i]`` and ``v[i] = value`` for i in 0..2 (iteration stays blocked);
-- ``_on_change``: a callable (default None) that every in-place change of a
-  vector calls after the change (the ``x``/``y``/``z``/``mag``/``mag2``/``hat``/
-  ``value`` setters, item assignment and ``rotate_in_place``), so an object
-  learns of ``ball.pos.x = 3``. Operators always return new vectors whose
-  ``_on_change`` is None (so does ``+v``, which in VPython returns ``v`` itself);
-- ``_xyz()``, the components as a tuple; ``_x_set``/``_y_set``/``_z_set``, set
-  one component without notifying; :func:`as_vector` for attribute setters.
+- ``v[i]`` and ``v[i] = value`` for i in 0..2; VPython 6's leniency
+  (:func:`set_lenient`: tuples as vectors, ``len``, iteration, ``abs``) for its programs;
+- ``_on_change``: called after every in-place change (setters, item assignment,
+  ``rotate_in_place``), so an object learns of ``ball.pos.x = 3``; operators return
+  new vectors with none (``+v`` too, which in VPython returns ``v`` itself);
+- ``_xyz()``; ``_x_set``/``_y_set``/``_z_set`` (no notifying); :func:`as_vector`.
 
 ``adjust_up``, ``adjust_axis`` and ``object_rotate`` are VPython's helpers for
 an object's axis and up; like VPython's they write components directly and
@@ -54,25 +52,20 @@ _Real = numbers.Real
 _new = object.__new__
 
 
-# VPython 6 programs (``from visual import *``) use tuples, lists and arrays as vectors,
-# and vectors as sequences; set by the runner for those programs only (set_lenient)
-_lenient = False
+_lenient = False     # VPython 6's vectors, for its programs only (set by the runner)
 
 
 def set_lenient(flag: bool) -> None:
-    """Accept VPython 6's vectors: ``vector()``, ``vector(x, y)``, ``vector(seq)``, a
-    2- or 3-sequence wherever a vector goes, and ``len``/iteration/``abs`` of vectors."""
+    """VPython 6's vectors: ``vector()``, ``vector(x, y)``, sequences as vectors, ``len``."""
     global _lenient
     _lenient = bool(flag)
 
 
-def is_lenient() -> bool:
-    """True while a VPython 6 program runs (:func:`set_lenient`)."""
+def is_lenient() -> bool:           # while a VPython 6 program runs
     return _lenient
 
 
-def _is_triple(value) -> bool:
-    """A 2- or 3-sequence of real numbers (a tuple, list or numpy array)."""
+def _is_triple(value) -> bool:      # a 2- or 3-sequence of numbers (tuple, list, array)
     if isinstance(value, (str, bytes, vector)):
         return False
     try:
@@ -82,8 +75,7 @@ def _is_triple(value) -> bool:
     return n in (2, 3) and all(isinstance(c, _Real) for c in value)
 
 
-def _lenient_components(args: tuple) -> tuple[float, float, float]:
-    """VPython 6's vector arguments: none (0, 0, 0), ``x, y`` (z = 0) or one sequence."""
+def _lenient_components(args: tuple) -> tuple[float, float, float]:   # (), (x, y), (seq,)
     if len(args) == 1:
         if not _is_triple(args[0]):
             raise TypeError('A vector needs 3 components.')
@@ -112,9 +104,7 @@ class vector:
 
     __hash__ = None     # VPython's vectors are mutable and unhashable
 
-    def __iter__(self):
-        """Not iterable, as in VPython 7 (despite ``__getitem__``); a sequence of 3 for
-        VPython 6 programs (:func:`set_lenient`)."""
+    def __iter__(self):      # not iterable, as in VPython 7; a sequence in VPython 6
         if not _lenient:
             raise TypeError("'vector' object is not iterable")
         return iter((self._x, self._y, self._z))
@@ -132,8 +122,7 @@ class vector:
             raise TypeError("bad operand type for abs(): 'vector'")
         return self.mag
 
-    def astuple(self) -> tuple[float, float, float]:
-        """The components as a tuple (VPython 6)."""
+    def astuple(self) -> tuple[float, float, float]:      # VPython 6's
         return (self._x, self._y, self._z)
 
     def __init__(self, *args) -> None:
@@ -265,7 +254,6 @@ class vector:
         return (vector, (self._x, self._y, self._z))
 
     # -- arithmetic (hot path: no validation beyond VPython's) -------------
-
     def __neg__(self) -> vector:
         v = _new(vector)
         v._x = -self._x

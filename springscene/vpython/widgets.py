@@ -23,6 +23,8 @@ and radio: unchecked, radio buttons with one ``name`` form a group; winput: type
 
 from __future__ import annotations
 
+import builtins
+import sys
 from typing import Any, Callable
 
 __all__ = [
@@ -425,6 +427,26 @@ class wtext(_Widget):
 def skipped(note: str) -> None:
     """Record something a user would have done that did not happen here."""
     _notes.append(str(note))
+
+
+# what ``input()`` answers when no one is at a terminal: a small positive number reads as
+# a count, a speed or an angle, and "press Enter" prompts take it too
+NO_USER_ANSWER = "1"
+
+
+def program_input(prompt: Any = "") -> str:
+    """A program's ``input()``: the terminal's answer when there is a user there or a
+    line waiting on standard input; with neither, ``NO_USER_ANSWER``, noted."""
+    stdin = sys.stdin
+    if stdin is not None and not stdin.closed and stdin.isatty():
+        return builtins.input(prompt)
+    print(prompt, end="", flush=True)
+    line = stdin.readline() if stdin is not None and not stdin.closed else ""
+    if line:
+        return line.rstrip("\n")
+    print(NO_USER_ANSWER)
+    skipped(f"input({str(prompt)!r}): no user at a terminal; answered {NO_USER_ANSWER!r}")
+    return NO_USER_ANSWER
 
 
 def notes() -> list[str]:

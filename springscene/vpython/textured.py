@@ -1,0 +1,123 @@
+"""Textured VPython objects as arrays: each object's mesh with texture coordinates.
+
+An object is textured when it has a ``texture`` the renderer can draw
+(:func:`spec_for`): sphere (and ellipsoid), box, cylinder, cone, pyramid and
+ring, as GlowScript's object shaders texture them, and a compound whose mesh
+kept its parts' texture coordinates (``_mesh.uv``, from
+``draw.object_mesh(part, uv=True)``); an arrow (GlowScript's arrow parts take no
+texture), helix or curve with a ``texture`` is drawn without it. The meshes are GlowScript's
+textured layouts (:data:`.shapes.TEXTURED`, ``shapes.ring(uv=True)``), placed
+like the untextured ones (:func:`.placement.place`).
+
+GlowScript's rules (render_vertex.shader, ring_render_vertex.shader):
+
+- a vertex is textured when its place (:func:`.shapes.texture_parts`) is one
+  the texture's ``place`` names; the others draw plain, in the object's colour;
+- ``flipx``, ``flipy`` and ``turn`` change the texture coordinates
+  (:func:`.textures.transform_uv`);
+- the picture is multiplied by the object's colour when it covers the whole
+  object; when it covers only some parts it is drawn as it is (colour white
+  there) and the rest in the object's colour.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import placement, shapes, textures
+from .textures import TextureSpec
+
+TEXTURABLE = frozenset({"sphere", "box", "cylinder", "cone", "pyramid", "ring"})
+
+
+def has_layout(obj) -> bool:
+    """Whether ``obj`` has texture coordinates: a kind GlowScript textures, or a compound
+    whose mesh kept its parts' (``_mesh.uv``)."""
+    if obj._kind == "compound":
+        return getattr(obj._mesh, "uv", None) is not None
+    return obj._kind in TEXTURABLE
+
+
+def spec_for(obj) -> TextureSpec | None:
+    """The texture ``obj`` is drawn with, or None (none given, none drawable, a kind without)."""
+    value = obj.__dict__.get("texture")
+    if value is None or not has_layout(obj):
+        return None
+    return textures.spec_of(value)
+
+
+def _rgb(colors: np.ndarray) -> np.ndarray:
+    return np.clip(np.rint(np.asarray(colors) * 255), 0, 255).astype(np.uint8)
+
+
+def _template(kind: str, obj=None) -> placement.Mesh:
+    if kind == "ring":
+        return shapes.ring(obj.radius, obj.thickness, uv=True)
+    return shapes.TEXTURED[kind]()
+
+
+def arrays(kind: str, objs: list, spec: TextureSpec) -> dict:
+    """Everything a textured batch draws, for objects of one kind sharing ``spec``.
+
+    Keys: ``points``, ``normals``, ``triangles``, ``rgb`` (uint8), ``uv``,
+    ``covered`` (per triangle: textured), ``bounds`` ((M, 2, 3) per object) and
+    ``signature`` (the topology).
+    """
+    if kind in ("ring", "compound"):
+        parts = [_own_mesh(obj) for obj in objs]
+        meshes = [p[0] for p in parts]
+        points = np.concatenate([p[1] for p in parts])
+        normals = np.concatenate([p[2] for p in parts])
+        colors = np.concatenate([_colours(o, len(m.points)) for o, m in zip(objs, meshes)])
+        offsets = np.cumsum([0] + [len(m.points) for m in meshes])
+        triangles = np.concatenate([m.triangles + off for m, off in zip(meshes, offsets)])
+        template_uv = np.concatenate([m.uv for m in meshes])
+        vertex_parts = np.concatenate([shapes.texture_parts(m, kind) for m in meshes])
+        bounds = np.array([[p[1].min(axis=0), p[1].max(axis=0)] for p in parts])
+        signature = (kind, tuple(len(m.points) for m in meshes))
+    else:
+        t = _template(kind)
+        pos, R, size, color = placement.object_frames(objs)
+        points, normals = placement.place(t, pos, R, size)
+        M, n = len(objs), len(t.points)
+        colors = np.repeat(color, n, axis=0)
+        triangles = placement.tile(t.triangles, n, M)
+        template_uv = np.tile(t.uv, (M, 1))
+        vertex_parts = np.tile(shapes.texture_parts(t, kind), M)
+        bounds = points.reshape(M, n, 3)
+        bounds = np.stack([bounds.min(axis=1), bounds.max(axis=1)], axis=1)
+        signature = (kind, M)
+    textured = _textured_vertices(vertex_parts, spec)
+    if not spec.covers_all:
+        colors = np.where(textured[:, None], 1.0, colors)
+    return {"points": points, "normals": normals, "triangles": triangles, "rgb": _rgb(colors),
+            "uv": textures.transform_uv(template_uv, spec),
+            "covered": textured[triangles].all(axis=1), "bounds": bounds,
+            "signature": signature}
+
+
+def _own_mesh(obj):
+    """A ring's (made in local lengths) or a compound's (unit-sized, scaled by size) mesh, placed."""
+    if obj._kind == "compound":
+        mesh, scale = obj._mesh, np.array([obj._size._xyz()])
+    else:
+        mesh, scale = _template("ring", obj), np.ones((1, 3))
+    pos = np.array([obj._pos._xyz()])
+    R = placement.frames(np.array([obj._axis._xyz()]), np.array([obj._up._xyz()]))
+    points, normals = placement.place(mesh, pos, R, scale)
+    return mesh, points, normals
+
+
+def _colours(obj, n: int) -> np.ndarray:
+    """Each point's colour in [0, 1]: a compound's own (its parts' times its colour)."""
+    if obj._kind == "compound":
+        return obj._vertex_rgb() / 255.0
+    return np.repeat([obj._color._xyz()], n, axis=0)
+
+
+def _textured_vertices(parts: np.ndarray, spec: TextureSpec) -> np.ndarray:
+    on = np.array([spec.sides, spec.left, spec.right])      # indexed by SIDES, LEFT, RIGHT
+    return on[parts]
+
+
+__all__ = ["TEXTURABLE", "has_layout", "spec_for", "arrays"]

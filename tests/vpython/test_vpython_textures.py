@@ -1,0 +1,317 @@
+"""Textures as VPython draws them: GlowScript's texture coordinates on every object, the
+``texture`` values VPython takes, the built-in pictures, and the pixels that come out."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import imageio.v3 as iio
+import numpy as np
+import pytest
+
+from conftest import ROOT
+from springscene.vpython import texture_images
+from springscene.vpython.shapes import (LEFT, RIGHT, SIDES, ring, texture_parts,
+                                        textured_box, textured_cone, textured_cylinder,
+                                        textured_pyramid, textured_sphere)
+from springscene.vpython.textures import TextureSpec, spec_of, transform_uv
+from springscene.vpython.runner import run_program
+
+PROGRAMS = ROOT / "tests" / "vpython_programs"
+
+
+@pytest.fixture
+def vp():
+    import springscene.vpython as vp
+
+    vp.reset()
+    return vp
+
+
+def notes():
+    from springscene.vpython import widgets
+
+    return widgets.notes()
+
+
+# -- texture coordinates: GlowScript's lib/glow/mesh.js ------------------------------------
+
+def test_sphere_poles_seam_and_longitudes_are_glowscripts():
+    m = textured_sphere()
+    assert len(m.points) == 31 * 31 and len(m.triangles) == 2 * 30 * 30
+    u, v = m.uv[:, 0], m.uv[:, 1]
+    y = m.points[:, 1]
+    assert np.all(v[np.isclose(y, 0.5)] == 1) and np.all(v[np.isclose(y, -0.5)] == 0)
+    assert np.allclose(y, 0.5 * np.cos(np.pi * (1 - v)))       # v = 1 - latitude index / N
+    ring_ = np.abs(y) < 0.4999                                 # all but the poles
+    seam = ring_ & ((u == 0) | (u == 1))
+    assert seam.sum() == 2 * 29
+    assert np.allclose(m.points[seam, 0], 0, atol=1e-12) and np.all(m.points[seam, 2] < 0)
+    for u0, direction in ((0.25, (-1, 0, 0)), (0.5, (0, 0, 1)), (0.75, (1, 0, 0))):
+        at = ring_ & np.isclose(u, u0)
+        d = m.points[at] / np.linalg.norm(m.points[at], axis=1)[:, None]
+        horizontal = d * [1, 0, 1]
+        horizontal /= np.linalg.norm(horizontal, axis=1)[:, None]
+        assert np.allclose(horizontal, direction, atol=1e-12)
+    assert np.allclose(m.normals, m.points / 0.5)
+
+
+def test_box_faces_take_the_whole_picture_upright():
+    m = textured_box()
+    assert m.uv.tolist() == [[0, 1], [0, 0], [1, 0], [1, 1]] * 6      # makeCube's texpos
+    for face in range(6):
+        p, uv, n = m.points[4 * face:4 * face + 4], m.uv[4 * face:4 * face + 4], m.normals[4 * face]
+        # u and v run along two edges of the face; seen from outside, u x v points out
+        du = p[2] - p[1]                # (0,0) -> (1,0)
+        dv = p[0] - p[1]                # (0,0) -> (0,1)
+        assert np.allclose(np.cross(du, dv), n)
+    front = m.points[16:20]
+    assert np.allclose(front[m.uv[16:20, 0] == 1, 0], 0.5)              # +z face: u to +x
+    assert np.allclose(front[m.uv[16:20, 1] == 1, 1], 0.5)              # and v up
+    assert texture_parts(m, "box").tolist() == [RIGHT] * 4 + [LEFT] * 4 + [SIDES] * 16
+
+
+def test_cylinder_caps_and_side_are_glowscripts():
+    m = textured_cylinder()
+    assert len(m.points) == 4 * 50 + 2
+    parts = texture_parts(m, "cylinder")
+    left, right, side = parts == LEFT, parts == RIGHT, parts == SIDES
+    assert left.sum() == right.sum() == 51 and side.sum() == 100
+    y, z = m.points[:, 1], m.points[:, 2]
+    assert np.allclose(m.uv[left, 0], 0.5 * (1 + 2 * z[left]))
+    assert np.allclose(m.uv[right, 0], 0.5 * (1 - 2 * z[right]))
+    assert np.allclose(m.uv[left | right, 1], 0.5 + y[left | right])
+    assert np.allclose(m.uv[side, 0], m.points[side, 0])               # u along the axis
+    # v around: 0 at -y, 1 at +y, 0.5 at +-z: the picture goes round and back, no seam
+    assert np.allclose(m.uv[side, 1], np.abs(np.arctan2(z[side], -y[side])) / np.pi)
+
+
+def test_cone_pyramid_and_ring_are_glowscripts():
+    cone = textured_cone()
+    assert len(cone.points) == 1 + 3 * 201
+    base = texture_parts(cone, "cone") == LEFT
+    assert np.allclose(cone.uv[base, 0], 0.5 * (1 + 2 * cone.points[base, 2]))
+    assert np.allclose(cone.uv[base, 1], 0.5 * (1 + 2 * cone.points[base, 1]))
+    apex = cone.points[:, 0] == 1
+    assert np.all(cone.uv[apex, 1] == 1) and np.all(cone.uv[~apex & ~base, 1] == 0)
+    k = np.arange(201)
+    assert np.allclose(cone.uv[2 + 3 * k, 0], 1 - k / 200)               # side rim: u = 1 - k/N
+    assert np.allclose(cone.points[2], [0, 0, -0.5])                     # starting at -z
+    pyr = textured_pyramid()
+    assert pyr.uv[4:7].tolist() == [[0, 0], [0.25, 0], [0.125, 1]]      # top face
+    assert texture_parts(pyr, "pyramid").tolist() == [LEFT] * 4 + [SIDES] * 12
+    r = ring(1.0, 0.1, uv=True)
+    assert len(r.points) == 61 * 21
+    c, i = np.meshgrid(np.arange(61) / 60, np.arange(21) / 20, indexing="ij")
+    assert np.allclose(r.uv, np.column_stack([c.ravel(), i.ravel()]))
+    assert np.allclose(r.points[0], [0, 0, -0.9])                        # seam: back, inside
+    assert np.all(texture_parts(r, "ring") == SIDES)
+
+
+@pytest.mark.parametrize("spec, expected", [
+    (TextureSpec("x", flipx=True), [[0.8, 0.3]]),
+    (TextureSpec("x", flipy=True), [[0.2, 0.7]]),
+    (TextureSpec("x", turn=1), [[0.3, 0.8]]),
+    (TextureSpec("x", turn=2), [[0.8, 0.7]]),
+    (TextureSpec("x", turn=3), [[0.7, 0.2]]),
+    (TextureSpec("x", flipx=True, turn=1), [[0.3, 0.2]]),
+])
+def test_flips_and_turns_are_the_shaders(spec, expected):
+    assert np.allclose(transform_uv(np.array([[0.2, 0.3]]), spec), expected)
+
+
+# -- what a texture value means -----------------------------------------------------------
+
+def test_names_urls_and_dicts(vp):
+    assert vp.textures.earth == ":earth_texture.jpg" and vp.bumpmaps.stucco == ":stucco_bumpmap.jpg"
+    names = [n for n in vars(vp.textures) if not n.startswith("_")]
+    assert sorted(names) == sorted(texture_images.NAMES)
+    assert spec_of(vp.textures.wood) == TextureSpec("builtin:wood")
+    url = "https://s3.amazonaws.com/glowscript/textures/flower_texture.jpg"
+    assert spec_of(url) == TextureSpec("builtin:flower")
+    s = spec_of({"file": vp.textures.rug, "place": ["right", "sides"], "flipy": True, "turn": -3,
+                 "bumpmap": vp.bumpmaps.stones})
+    assert s == TextureSpec("builtin:rug", left=False, right=True, sides=True, flipy=True, turn=1)
+    assert spec_of({"file": vp.textures.rug, "place": "ends"})[1:4] == (True, True, False)
+    assert spec_of(None) is None and not notes()
+
+
+def test_an_unknown_url_or_missing_file_is_a_note_never_an_error(vp):
+    assert spec_of("https://i.imgur.com/abc.jpg") is None
+    assert spec_of("no_such_brick.jpg") is None
+    assert spec_of({"bumpmap": vp.bumpmaps.rock}) is None
+    assert len(notes()) == 3 and "i.imgur.com/abc.jpg" in notes()[0]
+    spec_of("https://i.imgur.com/abc.jpg")
+    assert len(notes()) == 3                                          # once each
+
+
+def test_builtin_pictures_are_made_once_deterministic_and_distinct():
+    images = {n: texture_images.builtin_image(n) for n in texture_images.NAMES}
+    assert all(im.dtype == np.uint8 and im.ndim == 3 and im.shape[2] == 3
+               for im in images.values())
+    assert texture_images.builtin_image("wood") is images["wood"]     # cached
+    fresh = texture_images._to_uint8(texture_images.wood(texture_images._rng("wood")))
+    assert np.array_equal(fresh, images["wood"])                      # seeded
+    means = np.array([im.reshape(-1, 3).mean(axis=0) for im in images.values()])
+    assert len({tuple(np.round(m)) for m in means}) == len(images)
+    wood, metal = images["wood"].astype(float), images["metal"].astype(float)
+    assert wood[..., 0].mean() > wood[..., 2].mean() + 40             # wood is brown
+    assert abs(metal[..., 0].mean() - metal[..., 2].mean()) < 20      # metal is grey
+    # grain and brushing run left to right: rows vary less along them than columns do
+    assert np.abs(np.diff(metal, axis=1)).mean() < np.abs(np.diff(metal, axis=0)).mean()
+    earth = images["earth"].astype(float)
+    assert earth.shape[1] == 2 * earth.shape[0]                       # equirectangular
+    # the Pacific in the middle of the left quarter is blue; the Sahara is not
+    h, w = earth.shape[:2]
+    pacific = earth[h // 2 - 10:h // 2 + 10, w // 8 - 10: w // 8 + 10].reshape(-1, 3).mean(0)
+    sahara = earth[int(h * 0.37), int(w * 0.53)]
+    assert pacific[2] > pacific[0] + 60 and sahara[0] > sahara[2] + 30
+
+
+def test_the_earth_picture_says_where_it_comes_from():
+    readme = (ROOT / "springscene" / "vpython" / "data" / "README.md").read_text()
+    assert "earth.jpg" in readme and "Natural Earth" in readme and "public domain" in readme
+
+
+# -- pictures -----------------------------------------------------------------------------
+
+def _render(vp, size=(400, 400)):
+    from springscene.vpython.draw import Renderer
+
+    vp.scene.width, vp.scene.height = size
+    r = Renderer(vp.scene, antialias=False)
+    try:
+        return r.frame().astype(int), r.view
+    finally:
+        r.close()
+
+
+def _on_earth(lat: float, lon: float) -> np.ndarray:
+    """A point of a unit sphere under the Earth map's (lat, lon), as GlowScript textures it."""
+    phi = 2 * np.pi * (lon + 180) / 360
+    c = math.cos(math.radians(lat))
+    return np.array([-c * math.sin(phi), math.sin(math.radians(lat)), -c * math.cos(phi)])
+
+
+def test_an_earth_has_blue_oceans_and_land_where_the_map_has_them(vp):
+    vp.scene.range = 1.2
+    vp.sphere(radius=1, texture=vp.textures.earth, shininess=0)
+    img, view = _render(vp)
+
+    def rgb(lat, lon):
+        col, row = view.project(_on_earth(lat, lon))
+        return img[int(round(row)) - 1:int(round(row)) + 2,
+                   int(round(col)) - 1:int(round(col)) + 2].reshape(-1, 3).mean(axis=0)
+
+    for lat, lon in ((0, -25), (-35, -15), (25, -45), (10, -35)):      # the Atlantic
+        r, g, b = rgb(lat, lon)
+        assert b > r + 25, (lat, lon, r, g, b)
+    for lat, lon in ((23, 10), (23, 45), (48, 15), (-20, 25)):         # Sahara, Arabia, Europe
+        r, g, b = rgb(lat, lon)
+        assert r > b + 10 and g > b, (lat, lon, r, g, b)
+    r, g, b = rgb(0, 22)                                                # the Congo: green
+    assert g > b + 10 and g >= r - 10
+    north, south = rgb(50, 10), rgb(-50, 10)                            # Europe vs ocean
+    assert north[0] > south[0] + 20
+
+
+def test_the_texture_is_multiplied_by_the_colour(vp):
+    vp.scene.range = 1
+    vp.box(size=vp.vector(1.5, 1.5, 1.5), texture=vp.textures.flower, color=vp.color.red,
+           shininess=0)                                      # no white highlight
+    img, _ = _render(vp)
+    lit = img.sum(axis=2) > 30
+    assert lit.sum() > 20000
+    assert img[lit][:, 1].max() < 12 and img[lit][:, 2].max() < 12      # no green, no blue
+    assert img[lit][:, 0].std() > 10                                    # but a picture
+
+
+def _two_colour_file(path):
+    image = np.zeros((64, 64, 3), dtype=np.uint8)
+    image[:32] = (255, 0, 0)           # top red
+    image[32:] = (0, 0, 255)           # bottom blue
+    iio.imwrite(path, image)
+
+
+def test_a_local_image_file_is_a_texture_upright(vp, tmp_path, monkeypatch):
+    _two_colour_file(tmp_path / "brick.png")
+    monkeypatch.chdir(tmp_path)
+    vp.scene.range = 1
+    vp.box(size=vp.vector(1.5, 1.5, 0.1), texture="brick.png", emissive=True)
+    img, view = _render(vp)
+    col, row = view.project(np.array([0, 0.4, 0.05]))
+    assert img[int(row), int(col)].tolist() == pytest.approx([255, 0, 0], abs=3)
+    col, row = view.project(np.array([0, -0.4, 0.05]))
+    assert img[int(row), int(col)].tolist() == pytest.approx([0, 0, 255], abs=3)
+
+
+def test_place_textures_some_faces_and_leaves_the_rest_in_colour(vp, tmp_path):
+    _two_colour_file(tmp_path / "t.png")
+    vp.scene.range = 1.5
+    vp.scene.forward = vp.vector(-1, 0, -1)
+    vp.box(size=vp.vector(1, 1, 1), color=vp.color.green, emissive=True,
+           texture={"file": str(tmp_path / "t.png"), "place": "right"})
+    img, view = _render(vp)
+    right = view.project(np.array([0.5, 0.3, 0]))          # +x face, upper half: red, untinted
+    front = view.project(np.array([0, 0.3, 0.5]))          # +z face: the object's green
+    assert img[int(right[1]), int(right[0])].tolist() == pytest.approx([255, 0, 0], abs=3)
+    assert img[int(front[1]), int(front[0])].tolist() == pytest.approx([0, 255, 0], abs=3)
+
+
+def test_an_unknown_url_is_noted_and_the_object_still_drawn(tmp_path):
+    prog = tmp_path / "p.py"
+    prog.write_text(textwrap.dedent("""\
+        from vpython import *
+        b = box(texture="https://example.com/bricks.jpg", color=color.orange)
+        print(b.texture)
+    """))
+    result = run_program(prog, tmp_path / "p.png", page=False)
+    assert any("https://example.com/bricks.jpg" in n and "no network" in n for n in result.notes)
+    img = iio.imread(tmp_path / "p.png").astype(int)
+    orange = (img[..., 0] > 150) & (img[..., 1] > 60) & (img[..., 2] < 40)
+    assert orange.sum() > 5000
+
+
+def test_textures_change_with_the_object_and_go_away_with_none(vp):
+    vp.scene.range = 1
+    b = vp.box(size=vp.vector(1.5, 1.5, 1.5), color=vp.color.white, emissive=True)
+    plain, _ = _render(vp)
+    b.texture = vp.textures.rug
+    rug, _ = _render(vp)
+    b.texture = None
+    again, _ = _render(vp)
+    assert np.array_equal(plain, again) and not np.array_equal(plain, rug)
+
+
+def test_the_earth_and_moon_program(tmp_path):
+    result = run_program(PROGRAMS / "vp7_textured_earth.py", tmp_path / "e.png", duration=1,
+                         page=False)
+    img = iio.imread(tmp_path / "e.png").astype(int)
+    r, g, b = img[..., 0], img[..., 1], img[..., 2]
+    assert ((b > r + 40) & (b > 80)).sum() > 200          # oceans
+    assert ((g > b + 20) & (r > 60)).sum() > 50            # land
+    assert not result.notes
+
+
+def test_object_meshes_with_texture_coordinates_for_compounds(vp):
+    from springscene.vpython.draw import object_mesh
+    from springscene.vpython.shapes import textured_box
+
+    s = vp.sphere(radius=2, texture=vp.textures.earth)
+    points, normals, triangles, rgb, uv = object_mesh(s, uv=True)
+    assert len(points) == 961 and np.array_equal(uv, textured_sphere().uv)
+    assert np.allclose(np.linalg.norm(points, axis=1), 2)
+    b = vp.box(size=vp.vector(1.5, 1.5, 1.5), emissive=True)
+    assert len(object_mesh(b, uv=True)[4]) == len(object_mesh(b)[0]) == 24
+    s.visible = False
+    c = vp.compound([b], texture=vp.textures.rug)
+    vp.scene.range = 1
+    untextured, _ = _render(vp)              # its mesh kept no texpos: drawn without it
+    c._mesh = c._mesh._replace(uv=textured_box().uv)       # as a compound keeping its parts'
+    c._dirty = True
+    textured, view = _render(vp)
+    assert not np.array_equal(untextured, textured)
+    col, row = view.project(np.array([0, 0, 0.75]))          # the rug's gold centre
+    r, g, b_ = textured[int(row), int(col)]
+    assert r > 150 and g > 100 and b_ < 90
