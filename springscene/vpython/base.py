@@ -20,11 +20,32 @@ class _Base:
 
     _kind = "object"
 
+    _frame = None        # VPython 6's frame holding the object (:mod:`.frames`)
+
     def _register(self, args: dict) -> None:
         cv = args.pop("canvas", None)
         self._canvas = cv if cv is not None else _current_canvas()
         self._dirty = True
         self._canvas._add(self)
+        self._frame = None
+        if args.get("frame") is not None:
+            self.frame = args.pop("frame")
+        args.pop("frame", None)
+        args.pop("display", None)          # VPython 6's name for the canvas (one here)
+
+    @property
+    def frame(self):
+        """VPython 6's frame the object is in (None: the world)."""
+        return self._frame
+
+    @frame.setter
+    def frame(self, parent) -> None:
+        if self._frame is not None and self in self._frame._children:
+            self._frame._children.remove(self)
+        self._frame = parent
+        if parent is not None:
+            parent._children.append(self)
+        self._dirty = True
 
     def _touch(self) -> None:
         self._dirty = True

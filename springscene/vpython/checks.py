@@ -13,7 +13,7 @@ from __future__ import annotations
 from .vector import as_vector, vector
 
 # VPython attributes springscene does not draw: refused with a message naming them
-UNSUPPORTED = {"frame": "frames", "material": "materials"}
+UNSUPPORTED: dict[str, str] = {}
 
 
 class UnsupportedError(AttributeError):

@@ -172,14 +172,16 @@ class compound(fused):
             if getattr(obj, "_kind", None) in self._INELIGIBLE or obj.__class__.__name__ \
                     in self._INELIGIBLE:
                 raise TypeError(f"A {type(obj).__name__} object cannot be used in a compound")
-        parts = [object_mesh(o) for o in objs]
+        parts = [object_mesh(o, uv=True) for o in objs]     # texpos kept, as mesh.js merges
         surface = Surface.join([Surface(p[0], p[1], p[2], p[3].astype(float) / 255)
                                 for p in parts])
+        uv = np.concatenate([p[4] for p in parts])
         lo, hi = surface.points.min(axis=0), surface.points.max(axis=0)
         origin = args.pop("origin", None)
         centre = (lo + hi) / 2 if origin is None else np.array(_vec(origin, "origin")._xyz())
         size0 = np.maximum(hi - lo, 1e-12)
         self._take(surface, centre, size0)
+        self._mesh = self._mesh._replace(uv=uv)
         for obj in objs:
             obj.visible = False
         self._start(args, hi - lo)

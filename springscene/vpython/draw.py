@@ -28,7 +28,7 @@ import numpy as np
 from ..view import backend, camera
 from ..view.geometry import HelixTube
 from ..view.scene import MULTI_SAMPLES, TITLE_FONT_SIZE, apply_view, grab, title_color
-from . import placement, polygons, shapes, textured, textures
+from . import frames, placement, polygons, shapes, textured, textures
 from .batches import Batch, TextureCache, TexturedBatch
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
@@ -38,6 +38,7 @@ TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
 # level of detail: (slices, smallest on-screen radius in px that gets them)
 SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
 POINT_RADIUS = 2.5        # px: points of radius 0
+LINE_MIN_SEGMENT_PX = 1.5  # px: shorter segments of a thin line are merged
 _TAGS = re.compile(r"<[^>]*>")
 
 
@@ -229,12 +230,17 @@ class Renderer:
         return grab(self.plotter.ren_win, self.width, self.height, self._pixels)
 
     def sync(self) -> None:
-        """Rewrite every batch whose objects changed, then the lights, title and camera."""
+        """Rewrite every batch whose objects changed, then the lights, title and camera
+        (objects in VPython 6 frames placed in the world for the drawing)."""
+        with frames.in_world(self.cv._objects):
+            self._sync()
+
+    def _sync(self) -> None:
         cv = self.cv
         groups: dict[tuple, list] = defaultdict(list)
         labels = []
         for obj in cv._objects:
-            if not obj._visible:
+            if not obj._visible or frames.hidden(obj):
                 continue
             kind = obj._kind
             if kind == "label":
@@ -268,6 +274,7 @@ class Renderer:
         self._sync_lights()
         self._sync_title()
         self._place_camera()
+        self._thin_lines_on_first_view()
         self._sync_labels(labels)
 
     def _key(self, obj) -> tuple:
@@ -413,6 +420,11 @@ class Renderer:
             batch.hide()
             self._bounds.pop(key, None)
             return
+        self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
+        if key[0] == "lines":       # sub-pixel segments do not rasterise: thin them out
+            batch.objs, batch.thinned = objs, self.view is not None
+            if self.view is not None:
+                chunks = [_thin_line(c, self.view) for c in chunks]
         points = np.concatenate([c[0] for c in chunks])
         colors = _rgb(np.concatenate([c[1] for c in chunks]))
         signature = tuple(len(c[0]) for c in chunks)
@@ -426,7 +438,12 @@ class Renderer:
                     start += n
                 cells = np.concatenate(parts)
         batch.set(points, None, colors, cells, signature, style)
-        self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
+
+    def _thin_lines_on_first_view(self) -> None:
+        """Lines drawn before there was a camera to measure pixels by, thinned now."""
+        for key, batch in self._batches.items():
+            if key[0] == "lines" and not getattr(batch, "thinned", True):
+                self._draw(batch, key, batch.objs)
 
     # -- the rest of the picture ---------------------------------------------------------
 
@@ -532,6 +549,23 @@ class Renderer:
 
     def close(self) -> None:
         self.plotter.close()
+
+
+def _thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):
+    """A polyline's points (positions, colours, radii) with those closer than ``min_px``
+    along it on the screen dropped: GL draws nothing of a segment much under a pixel,
+    so a curve of thousands of points would come out dotted or not at all."""
+    pos = chunk[0]
+    if len(pos) <= 2:
+        return chunk
+    pixels = view.project(pos)
+    along = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pixels, axis=0), axis=1))])
+    step = np.floor(along / min_px)
+    keep = np.concatenate([[True], step[1:] != step[:-1]])
+    keep[-1] = True
+    if keep.all():
+        return chunk
+    return tuple(a[keep] for a in chunk)
 
 
 def _quads_to_triangles(flat: np.ndarray) -> np.ndarray:

@@ -140,10 +140,12 @@ class standard(_Base):
                 radius = self._trail_radius if self._trail_radius is not None \
                     else 0.1 * self._size.y
                 self._trail = points(canvas=self._canvas, color=vector(colour), radius=radius,
-                                     size_units="world", retain=self._retain)
+                                     size_units="world", retain=self._retain,
+                                     frame=self._frame)
             else:
                 self._trail = curve(canvas=self._canvas, color=vector(colour),
-                                    radius=self._trail_radius or 0, retain=self._retain)
+                                    radius=self._trail_radius or 0, retain=self._retain,
+                                    frame=self._frame)
         self._trail.append(vector(self._pos))
 
     def clear_trail(self) -> None:
@@ -357,6 +359,21 @@ class standard(_Base):
 
     x, y, z = _PosShortcut("x"), _PosShortcut("y"), _PosShortcut("z")
     texture = bumpmap = None          # none until given (:mod:`.textures` reads them)
+
+    @property
+    def material(self):
+        """VPython 6's look (``materials.wood``): drawn with the texture VPython 7 has for
+        it, or glowing for ``emissive``/``unshaded``."""
+        return self.__dict__.get("_material")
+
+    @material.setter
+    def material(self, value) -> None:
+        self.__dict__["_material"] = value
+        if getattr(value, "texture_value", None) is not None:
+            self.texture = value.texture_value
+        if getattr(value, "emissive", False):
+            self._emissive = True
+        self._dirty = True
     opacity = _scalar("opacity")
     shininess = _scalar("shininess")
     emissive = _scalar("emissive", bool)

@@ -30,6 +30,7 @@ import numpy as np
 
 from . import vector as _vector_module
 from .vector import as_vector, vector
+from .frames import frame
 from .visual6_extras import controls, ghistogram, materials
 
 # numpy names that would shadow a builtin VPython 6 programs use as the builtin
@@ -126,13 +127,6 @@ def _numpy_names() -> dict[str, Any]:
              or n in ("linalg", "fft", "ma", "polynomial")}
     names.update({n: v for n, v in _NUMPY1.items() if v is not None})
     return names
-
-
-class frame:
-    """VPython 6's ``frame``: not drawn yet; objects given ``frame=`` are refused."""
-
-    def __init__(self, **args: Any) -> None:
-        self.__dict__.update(args)
 
 
 def _exit(*args) -> None:

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from .graph import gvbars
+from .textures import textures
 
 # material → (texture name in VPython 7, or None; drawn emissive)
 MATERIALS = {"unshaded": (None, True), "emissive": (None, True), "diffuse": (None, False),
@@ -26,7 +27,7 @@ MATERIALS = {"unshaded": (None, True), "emissive": (None, True), "diffuse": (Non
              "chrome": ("metal", False), "ice": (None, False), "glass": (None, False),
              "blazed": (None, False), "silver": ("metal", False), "wood": ("wood", False),
              "marble": ("stucco", False), "earth": ("earth", False),
-             "BlueMarble": ("earth", False), "bricks": ("bricks", False)}
+             "BlueMarble": ("earth", False), "bricks": ("stones", False)}
 
 
 class Material:
@@ -35,6 +36,8 @@ class Material:
     def __init__(self, name: str) -> None:
         self.name = name
         self.texture, self.emissive = MATERIALS[name]
+        # what ``texture=`` takes for it (VPython 7's texture of that name), or None
+        self.texture_value = getattr(textures, self.texture) if self.texture else None
 
     def __repr__(self) -> str:
         return f"materials.{self.name}"

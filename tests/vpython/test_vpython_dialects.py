@@ -225,3 +225,46 @@ def test_x_y_z_are_pos_in_vpython6_and_own_attributes_in_vpython7(tmp_path):
     proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.splitlines()[0] == "5 0.0"
+
+
+# ---- the course-style programs of tests/vpython_programs ---------------------------------
+
+def _frames_of(program, tmp_path, **options) -> list[np.ndarray]:
+    frames = []
+    run_program(program, tmp_path / "v.mp4", page=False, fps=10,
+                on_frame=lambda i, img: frames.append(img.astype(int)), **options)
+    return frames
+
+
+def _has(img, rgb, tol=40) -> int:
+    return int((np.abs(img - np.array(rgb)).max(axis=-1) < tol).sum())
+
+
+def test_glowscript_spring_lab_moves_the_ball_and_plots(tmp_path):
+    frames = _frames_of(PROGRAMS / "gs_spring_lab.py", tmp_path, duration=2)
+    assert len(frames) == 20
+    first, last = frames[0], frames[-1]
+    assert _has(first, (255, 255, 255)) > 100_000              # scene.background white
+    orange = [np.nonzero((f[..., 0] > 200) & (f[..., 1] > 100) & (f[..., 1] < 190)
+                         & (f[..., 2] < 60))[0].mean() for f in frames]
+    assert max(orange) - min(orange) > 10                      # the ball oscillates
+    assert _has(last, (0, 255, 255), 90) > 300                 # the cyan helix
+
+
+def test_glowscript_orbit_with_tabs_leaves_a_trail(tmp_path):
+    frames = _frames_of(PROGRAMS / "gs_orbit_tabs.py", tmp_path)
+    last = frames[-1]
+    white = (last.min(axis=-1) > 200)
+    assert white.sum() > 150                                   # attach_trail's white curve
+    assert _has(last, (0, 0, 255), 60) > 50                    # the Earth
+    assert ((last[..., 1] > 150) & (last[..., 0] < 80)).sum() > 20   # the green arrow
+
+
+def test_vpython6_bounce_with_a_frame(tmp_path):
+    frames = _frames_of(PROGRAMS / "vp6_bounce_frame.py", tmp_path, duration=2)
+    assert frames[0].shape == (400, 600, 3)                    # display(width=, height=)
+    yellow = [(f[..., 0] > 180) & (f[..., 1] > 180) & (f[..., 2] < 80) for f in frames]
+    assert all(y.sum() > 200 for y in yellow)                  # the pinwheel in its frame
+    assert (yellow[0] != yellow[-1]).sum() > 200               # ... turning
+    reds = [np.nonzero((f[..., 0] > 150) & (f[..., 1] < 60))[1].mean() for f in frames]
+    assert reds[-1] - reds[0] > 30                             # the ball moves to the right

@@ -306,11 +306,12 @@ def test_object_meshes_with_texture_coordinates_for_compounds(vp):
     assert len(object_mesh(b, uv=True)[4]) == len(object_mesh(b)[0]) == 24
     s.visible = False
     c = vp.compound([b], texture=vp.textures.rug)
+    assert np.array_equal(c._mesh.uv, textured_box().uv)   # it keeps its parts' texpos
     vp.scene.range = 1
-    untextured, _ = _render(vp)              # its mesh kept no texpos: drawn without it
-    c._mesh = c._mesh._replace(uv=textured_box().uv)       # as a compound keeping its parts'
-    c._dirty = True
     textured, view = _render(vp)
+    c.texture = None
+    c._dirty = True
+    untextured, _ = _render(vp)
     assert not np.array_equal(untextured, textured)
     col, row = view.project(np.array([0, 0, 0.75]))          # the rug's gold centre
     r, g, b_ = textured[int(row), int(col)]

@@ -1,0 +1,213 @@
+"""What moves with something else, and the blank-video bugs: VPython 6 frames and
+materials, attach_trail/attach_arrow/attach_light, curve axis/rotate, thin curves of
+thousands of points, autoscale turned off (or range read) before the first frame,
+GlowScript's float range and slow rate, and input() with no terminal."""
+
+from __future__ import annotations
+
+import math
+import textwrap
+
+import imageio.v3 as iio
+import numpy as np
+import pytest
+
+from conftest import run_cli
+from springscene.vpython.runner import run_program
+
+
+def write(tmp_path, source: str, name: str = "prog.py"):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source).lstrip("\n"))
+    return path
+
+
+def still(tmp_path, source: str) -> np.ndarray:
+    prog = write(tmp_path, source)
+    run_program(prog, tmp_path / "x.png", page=False)
+    return iio.imread(tmp_path / "x.png").astype(int)
+
+
+def centre_of(mask: np.ndarray) -> tuple[float, float]:
+    rows, cols = np.nonzero(mask)
+    assert len(rows), "colour not found"
+    return cols.mean(), rows.mean()
+
+
+def red(img):
+    return (img[..., 0] > 120) & (img[..., 1] < 60) & (img[..., 2] < 60)
+
+
+def green(img):
+    return (img[..., 1] > 120) & (img[..., 0] < 60) & (img[..., 2] < 60)
+
+
+def blue(img):
+    return (img[..., 2] > 120) & (img[..., 0] < 60) & (img[..., 1] < 60)
+
+
+# ---- VPython 6 frames and materials -----------------------------------------------------
+
+def test_frame_places_and_turns_its_objects(tmp_path):
+    img = still(tmp_path, """
+        from visual import *
+        scene.range = 4
+        f = frame(pos=(2, 0, 0))
+        box(frame=f, pos=(1, 0, 0), size=(0.5, 0.5, 0.5), color=color.red)
+        g = frame(frame=f, pos=(0, -1, 0))
+        sphere(frame=g, pos=(0, 0, 0), radius=0.25, color=color.green)
+        sphere(pos=(0, 0, 0), radius=0.25, color=color.blue)
+        f.rotate(angle=pi/2, axis=(0, 0, 1), origin=(0, 0, 0))
+    """)
+    cx, cy = centre_of(blue(img))                 # the world's origin, at the centre
+    px = 200 / 4                                  # 400 px high for range 4: 50 px a unit
+    rx, ry = centre_of(red(img))                  # frame at (0, 2), box at local x=1: (0, 3)
+    gx, gy = centre_of(green(img))                # nested frame at local (0,-1): (1, 2)
+    assert abs(rx - cx) < 3 and abs((cy - ry) / px - 3) < 0.1
+    assert abs((gx - cx) / px - 1) < 0.1 and abs((cy - gy) / px - 2) < 0.1
+
+
+def test_invisible_frame_hides_its_objects_and_conversions(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        f = frame(pos=(1, 2, 3), axis=(0, 1, 0))
+        b = box(frame=f, pos=(1, 0, 0), color=color.red)
+        sphere(pos=(4, 0, 0), color=color.blue)
+        print(f.frame_to_world(b.pos), f.world_to_frame((1, 3, 3)), len(f.objects))
+        f.visible = False
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.splitlines()[0] == "<1, 3, 3> <1, 0, 0> 1"
+    img = iio.imread(tmp_path / "x.png").astype(int)
+    assert not red(img).any() and blue(img).any()
+
+
+def test_materials_draw_as_textures_or_glow(tmp_path):
+    img = still(tmp_path, """
+        from visual import *
+        scene.range = 2
+        sphere(pos=(-1, 0, 0), radius=0.8, material=materials.earth)
+        box(pos=(1, 0, 0), size=(1, 1, 1), color=color.red, material=materials.emissive)
+    """)
+    left, right = img[:, :320], img[:, 320:]
+    assert ((left[..., 2] > left[..., 0] + 40) & (left[..., 2] > 80)).sum() > 300   # oceans
+    lit = right[(right[..., 0] > 100)]
+    assert np.percentile(lit[..., 0], 10) > 250   # emissive: one flat full red, no shading
+    assert np.percentile(lit[..., 1], 90) < 5
+
+
+# ---- attached things, curves -------------------------------------------------------------
+
+def test_attach_trail_and_arrow_follow_at_each_render(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        scene.range = 5
+        ball = sphere(pos=vector(-4, 0, 0), radius=0.2, color=color.red)
+        ball.v = vector(0, 2, 0)
+        trail = attach_trail(ball, color=color.green)
+        a = attach_arrow(ball, "v", scale=0.5, color=color.blue)
+        for i in range(80):
+            rate(20)
+            ball.pos = ball.pos + vector(0.1, 0, 0)
+    """)
+    run_program(prog, tmp_path / "x.png", page=False)
+    img = iio.imread(tmp_path / "x.png").astype(int)
+    cols = np.nonzero(green(img))[1]
+    assert cols.min() < 320 - 150 and cols.max() > 320 + 150    # the trail from -4 to +4
+    from springscene.vpython.attachments import _arrows, _trails
+    assert len(_trails) == 1 and 60 <= len(_trails[0]._trail._pts) <= 81
+    assert _arrows[0].pos.x == pytest.approx(4.0) and _arrows[0].axis.y == 1.0
+    bx, by = centre_of(blue(img))
+    assert bx > 320 + 150 and by < 200            # the arrow above the ball at the right
+
+
+def test_curve_axis_size_and_rotate_place_its_points(tmp_path):
+    img = still(tmp_path, """
+        from vpython import *
+        scene.range = 4
+        c = curve(pos=[vector(0, 0, 0), vector(2, 0, 0)], radius=0.1, color=color.red)
+        c.rotate(angle=pi/2, axis=vector(0, 0, 1), origin=vector(0, 0, 0))
+        c.size = vector(1.5, 1, 1)
+        sphere(radius=0.1, color=color.blue)
+    """)
+    cx, cy = centre_of(blue(img))
+    rows, cols = np.nonzero(red(img))
+    assert abs(cols.mean() - cx) < 3                           # now along +y
+    assert abs((cy - rows.min()) / 50 - 3) < 0.15              # 2 long, scaled 1.5 along axis
+
+
+def test_a_thin_curve_of_thousands_of_points_is_a_solid_line(tmp_path):
+    img = still(tmp_path, """
+        from vpython import *
+        c = curve(color=color.yellow)
+        for i in range(5000):
+            c.append(vector(-5 + 10*i/4999, 0, 0))
+    """)
+    yellow = (img[..., 0] > 100) & (img[..., 1] > 100) & (img[..., 2] < 60)
+    cols = np.unique(np.nonzero(yellow)[1])
+    span = cols.max() - cols.min() + 1
+    assert span > 500 and len(cols) / span > 0.95              # lit along its whole length
+
+
+# ---- the range before the first frame ----------------------------------------------------
+
+def test_autoscale_off_before_the_first_frame_keeps_the_objects_in_view(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        sphere(pos=vector(0, 0, 0), radius=0.5, color=color.red)
+        box(pos=vector(1.5, 0, 0), size=vector(0.5, 0.5, 0.5), color=color.green)
+        scene.autoscale = False
+        print(round(scene.range, 3))
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    rng = float(proc.stdout.splitlines()[0])
+    assert 1 < rng < 4                             # from the objects, not the default 10
+    img = iio.imread(tmp_path / "x.png").astype(int)
+    assert red(img).sum() > 5000 and green(img).sum() > 1000
+
+
+def test_range_read_before_a_frame_is_measured(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        sphere(radius=2)
+        print(scene.range)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert 2 < float(proc.stdout.splitlines()[0]) < 6
+
+
+# ---- GlowScript and no user --------------------------------------------------------------
+
+def test_glowscript_float_range_rate_below_one_and_hoisting(tmp_path):
+    prog = write(tmp_path, """
+        GlowScript 3.2 VPython
+        button(bind=go, text="go")
+        n = 0
+        for x in range(0, 1, 0.25):
+            n += 1
+        for i in range(5/2):
+            n += 10
+        rate(0.5)
+        def go(b):
+            pass
+        print(n, sqrt(-1e-17) != sqrt(-1e-17), Math.floor(2.5))
+    """)
+    result = run_program(prog, tmp_path / "x.mp4", fps=10, page=False)
+    assert result.program_seconds == 2.0 and result.frames == 20
+    proc = run_cli("vpython", prog, "--out", tmp_path / "y.png")
+    assert proc.stdout.splitlines()[0] == "34 True 2"
+
+
+def test_input_with_no_terminal_answers_and_says_so(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        n = int(input("How many? "))
+        for i in range(n):
+            sphere(pos=vector(i, 0, 0))
+        print("made", n)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0 and "made 1" in proc.stdout
+    assert "input('How many? '): no user at a terminal; answered '1'" in proc.stderr
+    assert math.isfinite(1.0)
