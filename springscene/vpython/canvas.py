@@ -335,8 +335,8 @@ class canvas:
 
     @range.setter
     def range(self, value) -> None:
-        if isinstance(value, vector):       # VPython 6 allowed a vector; the x counts
-            value = value.x
+        if isinstance(value, (vector, tuple, list)):   # VPython 6 allowed a vector or a
+            value = value[0]                           # tuple; the x counts
         value = float(value)
         if not value > 0:
             raise ValueError("range must be positive")

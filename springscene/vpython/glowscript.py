@@ -48,8 +48,9 @@ def gs_range(*args):
     return [start + k * step for k in range(count)]
 
 
-def gs_rate(n) -> None:
-    """``rate(n)`` for any ``n > 0`` (GlowScript takes ``rate(0.5)``)."""
+def gs_rate(n, *wait) -> None:
+    """``rate(n)`` for any ``n > 0`` (GlowScript takes ``rate(0.5)``, and GlowScript 1's
+    ``rate(n, wait)``)."""
     if isinstance(n, (int, float)) and 0 < n < 1:
         if runtime.current() is not None:
             runtime.current().calls += 1
@@ -98,6 +99,15 @@ def _math_namespace() -> types.SimpleNamespace:
                                  round=round, random=random.random, **names)
 
 
+def series(vp: types.ModuleType, type: str = "line", **options: Any):
+    """GlowScript's old ``series(type=...)``: a gcurve ("line"), gdots ("scatter"),
+    gvbars ("bar") or ghbars ("hbar")."""
+    kinds = {"line": vp.gcurve, "scatter": vp.gdots, "bar": vp.gvbars, "hbar": vp.ghbars}
+    if type not in kinds:
+        raise ValueError(f"series type must be one of {', '.join(kinds)}, not {type!r}")
+    return kinds[type](**options)
+
+
 def alert(*args) -> None:
     """JavaScript's ``alert``: no one to show it to; noted."""
     widgets.skipped(f"alert({' '.join(map(str, args))!r}): no user, printed as a note")
@@ -112,5 +122,6 @@ def names(vp: types.ModuleType) -> dict[str, Any]:
     found.update(range=gs_range, rate=gs_rate, factorial=factorial, msclock=msclock,
                  print_options=print_options, display=vp.canvas, gdisplay=vp.graph,
                  vp_graph=vp.graph, Math=_math_namespace(), alert=alert,
-                 console=types.SimpleNamespace(log=print), version=["3.2", "glowscript"])
+                 console=types.SimpleNamespace(log=print), version=["3.2", "glowscript"],
+                 series=lambda **options: series(vp, **options), wait=None)
     return found

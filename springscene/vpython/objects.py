@@ -133,6 +133,11 @@ class standard(_Base):
             if self._interval <= 0 or self._pos_sets % self._interval == 0:
                 self._add_trail_point()
 
+    @property
+    def trail_object(self):
+        """VPython 6's name for the object's trail (a curve, or points)."""
+        return self._trail
+
     def _add_trail_point(self) -> None:
         if self._trail is None:
             colour = self._trail_color if self._trail_color is not None else self._color

@@ -146,6 +146,7 @@ class _Film:
         self.shown = None
         self.writer = None
         self.strip = None
+        self.graphs_only = False            # no 3D object at all: the video is the graphs
         self.frames = 0
         self.notes: list[str] = []
 
@@ -171,15 +172,21 @@ class _Film:
         image = self.picture()
         if self.writer is None:
             h, w = image.shape[:2]
-            if "graph" in self.overlays:
+            self.graphs_only = not any(cv._objects for cv in canvas._all) and bool(graphs())
+            if self.graphs_only:
+                self.notes.append("the program draws only graphs: the video shows them")
+            if "graph" in self.overlays or self.graphs_only:
                 if graphs():
                     self.strip = GraphStrip(list(graphs()), w)
                 else:
                     self.notes.append("--overlay graph: the program had made no graph "
                                       "by its first frame")
-            size = (w, h + (self.strip.size[1] if self.strip is not None else 0))
+            size = (w, (0 if self.graphs_only else h)
+                    + (self.strip.size[1] if self.strip is not None else 0))
             self.writer = VideoWriter(self.tmp, self.fps, size)
-        if self.strip is not None:
+        if self.graphs_only:
+            image = self.strip.draw()
+        elif self.strip is not None:
             image = np.vstack([image, self.strip.draw()])
         self.writer.write(image)
         self.frames += 1
@@ -289,6 +296,7 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
     runtime.set_capture(capture)
     canvas._measurer = lambda cv: film.renderer(cv).sync()
     set_lenient(dialect.kind == "vpython6")
+    old_clock = _old_time_clock(dialect)
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
              "input": widgets.program_input}
     if dialect.kind == "glowscript":
@@ -313,12 +321,22 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
         runtime.set_capture(None)
         canvas._measurer = None
         set_lenient(False)
+        old_clock()
         sys.argv, sys.path[:] = saved_argv, saved_path
         _restore_modules(saved)
         _forget_program_modules(modules_before, path.resolve().parent)
         if not ok:
             film.close(False)
     return ended
+
+
+def _old_time_clock(dialect: dialects.Dialect):
+    """VPython 6 programs were written for Pythons that had ``time.clock`` (gone in 3.8):
+    for their runs it is ``time.perf_counter``. Returns the undo."""
+    if dialect.kind != "vpython6" or hasattr(time, "clock"):
+        return lambda: None
+    time.clock = time.perf_counter
+    return lambda: delattr(time, "clock")
 
 
 def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> list[Path]:

@@ -149,6 +149,7 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
                  frame=frame, random=np.random, exit=_exit, scene=vp.scene,
                  version=("6.11", "release"))
     names["sum"], names["any"], names["all"] = np.sum, np.any, np.all
+    names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
     return names
 
 
@@ -182,6 +183,15 @@ def _controls_names(vp: types.ModuleType) -> dict[str, Any]:
     return names
 
 
+def _stroke_text(vp: types.ModuleType):
+    """``visual.text``'s ``text(pos=, string=, height=, depth=, justify=, ...)``, drawn as
+    VPython 7's 3D text."""
+    def text(string: str = "", justify: str = "left", **options: Any):
+        options.pop("width", None)
+        return vp.text(text=str(options.pop("text", string)), align=justify, **options)
+    return text
+
+
 def _filedialog_names() -> dict[str, Any]:
     def none(*args, **kwargs):
         return None
@@ -193,7 +203,8 @@ def modules(vp: types.ModuleType) -> dict[str, types.ModuleType]:
     visual = _module("visual", namespace(vp))
     parts = {"graph": _graph_names(vp), "controls": _controls_names(vp),
              "factorial": {"factorial": factorial, "combin": vp.combin},
-             "filedialog": _filedialog_names()}
+             "filedialog": _filedialog_names(), "text": {"text": _stroke_text(vp)}}
+    visual.__path__ = []              # a package: an unknown visual.x is "no module named"
     found = {"visual": visual}
     for part, names in parts.items():
         module = _module(f"visual.{part}", names)
