@@ -31,7 +31,7 @@ import numpy as np
 from . import vector as _vector_module
 from .vector import as_vector, vector
 from .frames import frame
-from .visual6_extras import controls, ghistogram, materials
+from .visual6_extras import button, controls, ghistogram, materials, menu, slider, toggle
 
 # numpy names that would shadow a builtin VPython 6 programs use as the builtin
 _NOT_FROM_NUMPY = {"abs", "max", "min", "round", "pow", "bool", "divmod", "int", "float",
@@ -178,8 +178,8 @@ def _controls_names(vp: types.ModuleType) -> dict[str, Any]:
     names = {n: getattr(vp, n) for n in ("box", "cylinder", "distant_light", "label",
                                          "sphere", "vector", "color")}
     names.update(display=vp.canvas, crayola=vp.color, mag=mag, norm=norm, pi=math.pi,
-                 sin=math.sin, cos=math.cos, controls=controls, frame=frame, button=vp.button,
-                 toggle=vp.checkbox, slider=vp.slider, menu=vp.menu)
+                 sin=math.sin, cos=math.cos, controls=controls, frame=frame, button=button,
+                 toggle=toggle, slider=slider, menu=menu)
     return names
 
 

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 
+from . import runtime, widgets
 from .graph import gvbars
 from .textures import textures
 
@@ -110,4 +111,47 @@ class controls:
         pass
 
     def interact(self) -> None:
-        """VPython 6 checked for mouse events here; there are none."""
+        """VPython 6 handled the mouse here; with no user, one video frame passes (so a
+        ``while True: c.interact()`` loop ends with the video)."""
+        widgets.skipped("controls.interact(): no user; each call lets one frame pass")
+        runtime.wait()
+
+
+def _v6_args(args: dict[str, Any]) -> dict[str, Any]:
+    """VPython 6's control keywords as VPython 7's: ``action`` is the ``bind`` (called with
+    no argument, never here); its place in the controls window (``pos``, ``axis``) is
+    not kept."""
+    action = args.pop("action", None)
+    args["bind"] = action if action is not None else (lambda *a: None)
+    for name in ("pos", "axis", "controls", "display"):
+        args.pop(name, None)
+    return args
+
+
+def button(**args: Any) -> widgets.button:
+    """VPython 6's ``button(pos=, width=, height=, text=, color=, action=)``."""
+    return widgets.button(**_v6_args(args))
+
+
+def slider(**args: Any) -> widgets.slider:
+    """VPython 6's ``slider(pos=, axis=|length=, width=, min=, max=, value=, action=)``."""
+    args = _v6_args(args)
+    args.setdefault("min", 0)
+    args.setdefault("max", 100)
+    return widgets.slider(**args)
+
+
+def toggle(**args: Any) -> widgets.checkbox:
+    """VPython 6's ``toggle(text0=, text1=, value=, action=)``: ``value`` stays as made."""
+    args = _v6_args(args)
+    args.setdefault("value", 0)
+    return widgets.checkbox(**args)
+
+
+def menu(**args: Any) -> widgets.menu:
+    """VPython 6's ``menu(text=)``, filled by ``m.items.append(("label", function))``."""
+    args = _v6_args(args)
+    args.setdefault("choices", [])
+    m = widgets.menu(**args)
+    m.items = []
+    return m

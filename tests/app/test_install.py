@@ -60,3 +60,16 @@ def test_still_and_figures_run_from_another_folder(installed, tmp_path):
     assert proc.returncode == 0, proc.stderr
     names = {p.name for p in (tmp_path / "figs").iterdir()}
     assert {"hooke.png", "scene.png", "figures.wiki", "oscillation.gif"} <= names
+
+
+def test_vpython_textures_come_with_the_package(installed, tmp_path):
+    """The Earth map is package data: a GlowScript program textured with it runs from
+    another folder and shows oceans."""
+    (tmp_path / "earth.py").write_text("Web VPython 3.2\n"
+                                       "sphere(texture=textures.earth)\n")
+    proc = _run(installed, tmp_path, "springscene", "vpython", "earth.py", "--out", "e.png")
+    assert proc.returncode == 0, proc.stderr
+    import imageio.v3 as iio
+
+    img = iio.imread(tmp_path / "e.png").astype(int)
+    assert ((img[..., 2] > img[..., 0] + 40) & (img[..., 2] > 80)).sum() > 2000

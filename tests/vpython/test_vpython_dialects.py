@@ -268,3 +268,22 @@ def test_vpython6_bounce_with_a_frame(tmp_path):
     assert (yellow[0] != yellow[-1]).sum() > 200               # ... turning
     reds = [np.nonzero((f[..., 0] > 150) & (f[..., 1] < 60))[1].mean() for f in frames]
     assert reds[-1] - reds[0] > 30                             # the ball moves to the right
+
+
+def test_vpython6_controls_wait_for_no_one(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        from visual.controls import *
+        c = controls(title="Controls", x=0, y=400, width=300, height=300, range=50)
+        b = button(pos=(0, 0), width=10, height=10, text="Start", action=lambda: go())
+        s = slider(pos=(-15, -10), length=30, min=0, max=10, value=3, action=lambda: None)
+        t = toggle(pos=(10, 10), text0="off", text1="on", value=1, action=lambda: None)
+        m = menu(pos=(0, 20), height=7, width=25, text="Options")
+        m.items.append(("Red", lambda: None))
+        sphere(color=color.red)
+        while True:
+            c.interact()
+    """)
+    result = run_program(prog, tmp_path / "x.mp4", duration=1, fps=10, page=False)
+    assert (result.ended, result.frames) == ("duration", 10)
+    assert any("controls.interact()" in n for n in result.notes)
