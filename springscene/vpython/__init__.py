@@ -28,6 +28,8 @@ Modules, each importing only those listed before it:
 
 from __future__ import annotations
 
+from types import SimpleNamespace as _SimpleNamespace
+
 from . import attachments, vmath
 from .attachments import attach_arrow, attach_trail
 from .canvas import canvas, color, distant_light, local_light
@@ -71,10 +73,11 @@ def get_library(url, *args, **kwargs) -> None:
     _skipped(f"get_library({url!r}): a JavaScript library; not loaded (no browser)")
 
 
-def read_local_file(*args, **kwargs) -> str:
-    """A file the user picks: no user here, so no file; the text is empty (noted)."""
-    _skipped("read_local_file(): no user to pick a file; read as empty text ''")
-    return ""
+def read_local_file(*args, **kwargs) -> _SimpleNamespace:
+    """A file the user picks (GlowScript gives its name, text, size, type and date): no
+    user here, so no file; an empty one is read (noted)."""
+    _skipped("read_local_file(): no user to pick a file; read an empty file")
+    return _SimpleNamespace(name="", text="", size=0, type="", date="")
 
 
 def set_browser(*args, **kwargs) -> None:

@@ -59,6 +59,7 @@ class _PointList(_Base):
         self._emissive = False
         self._origin = vector(0, 0, 0)
         self._size_units = "pixels"
+        self._cache = None      # arrays of the first points, kept while only appends happen
         pos = kwargs.pop("pos", None)
         if pos is not None and args:
             raise AttributeError("Malformed constructor")
@@ -105,6 +106,11 @@ class _PointList(_Base):
         object.__setattr__(self, attr, value)
         if isinstance(value, vector):
             value._on_change = self._touch
+        self._cache = None
+        self._dirty = True
+
+    def _touch(self) -> None:
+        self._cache = None
         self._dirty = True
 
     @property
@@ -135,7 +141,16 @@ class _PointList(_Base):
 
     def _trim(self) -> None:
         if self._retain > 0 and len(self._pts) > self._retain:
-            del self._pts[:len(self._pts) - self._retain]
+            k = len(self._pts) - self._retain
+            del self._pts[:k]
+            if self._cache is not None:
+                count, *arrays = self._cache
+                self._cache = (count - k, *(a[k:] for a in arrays)) if count > k else None
+        self._dirty = True
+
+    def _changed(self) -> None:
+        """A change other than an append: the arrays are made anew."""
+        self._cache = None
         self._dirty = True
 
     def append(self, *args, **kwargs) -> None:
@@ -144,6 +159,7 @@ class _PointList(_Base):
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
+        self._cache = None
         self._trim()
 
     def _check_index(self, n: int) -> None:
@@ -178,7 +194,7 @@ class _PointList(_Base):
                 p[key] = value
             else:
                 raise AttributeError(f"modify: unknown point attribute {key!r}")
-        self._dirty = True
+        self._changed()
 
     def slice(self, start: int, end: int) -> list[dict]:
         return self._pts[start:end]
@@ -188,12 +204,12 @@ class _PointList(_Base):
             raise ValueError("You cannot delete a negative number of points")
         pts = self._parse(args, {}) if args else []
         self._pts[start:start + howmany] = pts
-        self._dirty = True
+        self._changed()
 
     def pop(self, n: int = -1):
         if not self._pts:
             return None
-        self._dirty = True
+        self._changed()
         return self._pts.pop(n)
 
     def shift(self):
@@ -201,22 +217,33 @@ class _PointList(_Base):
 
     def clear(self) -> None:
         self._pts = []
-        self._dirty = True
+        self._changed()
 
     def _arrays(self):
-        """Positions (n, 3), colours (n, 3) and radii (n,) of the visible points."""
-        pts = [p for p in self._pts if p.get("visible", True)]
-        n = len(pts)
-        pos = np.empty((n, 3))
-        col = np.empty((n, 3))
-        rad = np.empty(n)
+        """Positions (n, 3), colours (n, 3) and radii (n,) of the visible points.
+
+        The arrays of the points already seen are kept while the program only appends
+        (a trail), so a frame reads only the new points, not all of them again.
+        """
+        start, kept = (0, None) if self._cache is None else (self._cache[0], self._cache[1:])
+        new = self._pts[start:]
+        n = len(new)
+        pos, col = np.empty((n, 3)), np.empty((n, 3))
+        rad, vis = np.empty(n), np.empty(n, dtype=bool)
         c0, r0 = self._color.value, self._radius
-        for k, p in enumerate(pts):
-            pos[k] = p["pos"].value
+        for k, p in enumerate(new):
+            pos[k] = p["pos"]._xyz()
             c = p.get("color")
-            col[k] = c.value if c is not None else c0
+            col[k] = c._xyz() if c is not None else c0
             rad[k] = p.get("radius", r0)
-        return pos, col, rad
+            vis[k] = p.get("visible", True)
+        if kept is not None:
+            pos, col, rad, vis = (np.concatenate([a, b]) for a, b in zip(kept,
+                                                                         (pos, col, rad, vis)))
+        self._cache = (len(self._pts), pos, col, rad, vis)
+        if vis.all():
+            return pos, col, rad
+        return pos[vis], col[vis], rad[vis]
 
 
 class curve(_PointList):

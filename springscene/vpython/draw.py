@@ -142,12 +142,7 @@ def _mesh(kind: str, obj):
         points, normals = placement.place(mesh, pos, R, scale)
         return points, normals, mesh.triangles, obj._vertex_rgb()
     elif kind == "tube":
-        p, col, rad = obj._arrays()
-        if len(p) < 2:
-            return None
-        mesh = shapes.tube(p, rad)
-        rgb = _rgb(col)[shapes.tube_vertex_points(len(p))]
-        return mesh.points, mesh.normals, mesh.triangles, rgb
+        return _tube(obj)
     elif kind == "sphere-points":
         p, col, rad = obj._arrays()
         if not len(p):
@@ -349,6 +344,9 @@ class Renderer:
             self._bounds[key] = a["bounds"]
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
+        elif kind == "tube" and self.view is not None:   # points under a pixel apart merged
+            meshes = [m for m in (_tube(o, self.view) for o in objs) if m is not None]
+            self._draw_meshes(batch, key, meshes, style)
         else:
             meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
@@ -549,6 +547,19 @@ class Renderer:
 
     def close(self) -> None:
         self.plotter.close()
+
+
+def _tube(obj, view=None):
+    """A curve of radius > 0 as a tube; with a ``view``, its points closer than
+    ``LINE_MIN_SEGMENT_PX`` on the screen merged (a long trail is thousands of them)."""
+    p, col, rad = obj._arrays()
+    if len(p) < 2:
+        return None
+    if view is not None:
+        p, col, rad = _thin_line((p, col, rad), view)
+    mesh = shapes.tube(p, rad)
+    rgb = _rgb(col)[shapes.tube_vertex_points(len(p))]
+    return mesh.points, mesh.normals, mesh.triangles, rgb
 
 
 def _thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):

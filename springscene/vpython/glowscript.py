@@ -108,6 +108,11 @@ def series(vp: types.ModuleType, type: str = "line", **options: Any):
     return kinds[type](**options)
 
 
+def download(filename, data) -> None:
+    """GlowScript's ``download``: a file to the user's Downloads folder; there is none."""
+    widgets.skipped(f"download({str(filename)!r}): no browser to save it; not written")
+
+
 def alert(*args) -> None:
     """JavaScript's ``alert``: no one to show it to; noted."""
     widgets.skipped(f"alert({' '.join(map(str, args))!r}): no user, printed as a note")
@@ -123,5 +128,6 @@ def names(vp: types.ModuleType) -> dict[str, Any]:
                  print_options=print_options, display=vp.canvas, gdisplay=vp.graph,
                  vp_graph=vp.graph, Math=_math_namespace(), alert=alert,
                  console=types.SimpleNamespace(log=print), version=["3.2", "glowscript"],
-                 series=lambda **options: series(vp, **options), wait=None)
+                 series=lambda **options: series(vp, **options), wait=None,
+                 download=download)
     return found

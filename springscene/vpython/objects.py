@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import math
 
+from . import runtime
 from .base import _Base
 from .checks import UNSUPPORTED, _vec, unsupported
 from .curves import curve, points
@@ -130,8 +131,20 @@ class standard(_Base):
         self._dirty = True
         if self._make_trail and not self._constructing:
             self._pos_sets += 1
-            if self._interval <= 0 or self._pos_sets % self._interval == 0:
+            if (self._interval <= 0 or self._pos_sets % self._interval == 0) \
+                    and self._pps_allows():
                 self._add_trail_point()
+
+    def _pps_allows(self) -> bool:
+        """``pps`` > 0: at most that many trail points a program second."""
+        if not self._pps or self._pps <= 0 or runtime.current() is None:
+            return True
+        now = runtime.current().clock
+        last = self.__dict__.get("_pps_last")
+        if last is not None and now - last < 1 / self._pps:
+            return False
+        self.__dict__["_pps_last"] = now
+        return True
 
     @property
     def trail_object(self):
@@ -148,9 +161,9 @@ class standard(_Base):
                                      size_units="world", retain=self._retain,
                                      frame=self._frame)
             else:
-                self._trail = curve(canvas=self._canvas, color=vector(colour),
-                                    radius=self._trail_radius or 0, retain=self._retain,
-                                    frame=self._frame)
+                radius = 0 if is_lenient() else self._trail_radius or 0   # VPython 6: thin
+                self._trail = curve(canvas=self._canvas, color=vector(colour), radius=radius,
+                                    retain=self._retain, frame=self._frame)
         self._trail.append(vector(self._pos))
 
     def clear_trail(self) -> None:

@@ -19,6 +19,9 @@ MAX_DENOMINATOR = 10 ** 9
 
 
 RENDERS_PER_SECOND = 60      # GlowScript draws (and moves attached trails) at 60 Hz
+# rate(n) above this runs at this: VPython runs such a loop as fast as the computer goes
+# (about this many simple iterations a second), so rate(1e15) still moves through time
+MAX_RATE = 100_000
 
 
 class Stop(BaseException):
@@ -46,6 +49,7 @@ class Timeline:
         self.frames = 0
         self.calls = 0
         self.renders = 0
+        self.capped_rate = None     # the largest rate(n) run at MAX_RATE instead
         self.on_render: Callable[[], None] | None = None   # at VPython's render rate
 
 
@@ -103,6 +107,9 @@ def rate(n) -> None:
         raise ValueError("rate value must be greater than or equal to 1")
     if _current is not None:
         _current.calls += 1
+        if n > MAX_RATE:           # "as fast as it goes": a machine's pace, not 1e15 a second
+            _current.capped_rate = max(_current.capped_rate or 0, n)
+            n = MAX_RATE
         _current.advance(1 / _span(n, "rate value"))
 
 

@@ -129,6 +129,18 @@ def _numpy_names() -> dict[str, Any]:
     return names
 
 
+class _Random:
+    """``random`` as ``from visual import *`` left it, ``numpy.random``
+    (``random.uniform(a, b)``, ``random.randint``), that can also be called as
+    ``random()``, as many VPython 6 programs (written against later VPythons) do."""
+
+    def __call__(self) -> float:
+        return float(np.random.random())
+
+    def __getattr__(self, name: str):
+        return getattr(np.random, name)
+
+
 def _exit(*args) -> None:
     """``exit()``: the program ends (VPython 6 closed its window)."""
     raise SystemExit(0)
@@ -146,7 +158,7 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
     names.update(vector=vector, vec=vector, mag=mag, mag2=mag2, norm=norm, dot=dot,
                  cross=cross, proj=proj, comp=comp, diff_angle=diff_angle, rotate=rotate,
                  display=vp.canvas, crayola=vp.color, color=vp.color, materials=materials,
-                 frame=frame, random=np.random, exit=_exit, scene=vp.scene,
+                 frame=frame, random=_Random(), exit=_exit, scene=vp.scene,
                  version=("6.11", "release"))
     names["sum"], names["any"], names["all"] = np.sum, np.any, np.all
     names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
@@ -208,7 +220,8 @@ def modules(vp: types.ModuleType) -> dict[str, types.ModuleType]:
     found = {"visual": visual}
     for part, names in parts.items():
         module = _module(f"visual.{part}", names)
-        setattr(visual, part, module)
+        if part != "text":              # visual.text stays the 3D text class until imported
+            setattr(visual, part, module)
         found[f"visual.{part}"] = module
     vis = _module("vis", {k: v for k, v in namespace(vp).items()
                           if k in vp.__all__ or k in ("display", "frame", "materials")})
