@@ -144,6 +144,31 @@ class _IsLiteral(ast.NodeTransformer):
         return node
 
 
+class _Push(ast.NodeTransformer):
+    """``L.append(a, b)`` → ``__gs_push__(L, a, b)``: RapydScript's list ``append`` is
+    JavaScript's ``push``, which takes several items. Only calls with two or more
+    positional arguments are touched (a Python ``append`` takes one)."""
+
+    def visit_Call(self, node: ast.Call) -> ast.AST:
+        self.generic_visit(node)
+        f = node.func
+        if isinstance(f, ast.Attribute) and f.attr == "append" and len(node.args) >= 2 \
+                and not node.keywords and not any(isinstance(a, ast.Starred)
+                                                  for a in node.args):
+            call = ast.Call(func=ast.Name("__gs_push__", ast.Load()),
+                            args=[f.value, *node.args], keywords=[])
+            return ast.copy_location(call, node)
+        return node
+
+
+def gs_push(target: Any, *items: Any) -> Any:
+    """JavaScript's ``push`` for a list; anything else's own ``append``."""
+    if isinstance(target, list):
+        target.extend(items)
+        return len(target)
+    return target.append(*items)
+
+
 def _names_loaded(node: ast.AST) -> set[str]:
     return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)
             and isinstance(n.ctx, ast.Load)}
@@ -180,6 +205,7 @@ def transform(tree: ast.Module) -> ast.Module:
     """The GlowScript leniencies CPython lacks, put into a parsed program."""
     tree = _TextPlus().visit(tree)
     tree = _IsLiteral().visit(tree)
+    tree = _Push().visit(tree)
     tree = hoist_functions(tree)
     return ast.fix_missing_locations(tree)
 

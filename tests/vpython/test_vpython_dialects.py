@@ -288,3 +288,10 @@ def test_vpython6_controls_wait_for_no_one(tmp_path):
     result = run_program(prog, tmp_path / "x.mp4", duration=1, fps=10, page=False)
     assert (result.ended, result.frames) == ("duration", 10)
     assert any("controls.interact()" in n for n in result.notes)
+
+
+def test_glowscript_list_append_of_several_items_is_a_push():
+    names = {"__gs_push__": dialects.gs_push}
+    tree = dialects.transform(ast.parse("L = [1]\nL.append(2, 3)\nL.append(4)\n"))
+    exec(compile(tree, "<t>", "exec"), names)
+    assert names["L"] == [1, 2, 3, 4]
