@@ -245,8 +245,9 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     result.images = images + _write_extras(out, result, page, still)
     result.notes = film.notes + widgets.notes()
     if timeline.capped_rate is not None:
-        result.notes.append(f"rate({timeline.capped_rate:g}) ran at rate({runtime.MAX_RATE:,}), "
-                            "as fast as a computer runs such a loop")
+        result.notes.append(f"rate({timeline.capped_rate:g}) ran as fast as it goes: each "
+                            "iteration took the time it took to compute (at least "
+                            f"1/{runtime.MAX_RATE:,} s), as in VPython")
     if ended == "duration" and duration is None:
         result.notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
                             "(the default; use --duration or --frames)")

@@ -12,6 +12,7 @@ When the run has all its frames, the call raises :class:`Stop`, a
 
 from __future__ import annotations
 
+import time
 from fractions import Fraction
 from typing import Callable
 
@@ -19,8 +20,8 @@ MAX_DENOMINATOR = 10 ** 9
 
 
 RENDERS_PER_SECOND = 60      # GlowScript draws (and moves attached trails) at 60 Hz
-# rate(n) above this runs at this: VPython runs such a loop as fast as the computer goes
-# (about this many simple iterations a second), so rate(1e15) still moves through time
+# rate(n) above this is "as fast as it goes": VPython then runs the loop at the computer's
+# pace, so each iteration takes the program time it took to compute (at least 1/MAX_RATE s)
 MAX_RATE = 100_000
 
 
@@ -49,7 +50,8 @@ class Timeline:
         self.frames = 0
         self.calls = 0
         self.renders = 0
-        self.capped_rate = None     # the largest rate(n) run at MAX_RATE instead
+        self.capped_rate = None     # the largest rate(n) run at the machine's pace instead
+        self.wall: float | None = None   # when the last such rate() call returned
         self.on_render: Callable[[], None] | None = None   # at VPython's render rate
 
 
@@ -107,10 +109,20 @@ def rate(n) -> None:
         raise ValueError("rate value must be greater than or equal to 1")
     if _current is not None:
         _current.calls += 1
-        if n > MAX_RATE:           # "as fast as it goes": a machine's pace, not 1e15 a second
+        if n > MAX_RATE:           # "as fast as it goes": the machine's pace, not 1e15 a second
             _current.capped_rate = max(_current.capped_rate or 0, n)
-            n = MAX_RATE
+            _current.advance(_machine_pace(_current))
+            _current.wall = time.perf_counter()
+            return
         _current.advance(1 / _span(n, "rate value"))
+
+
+def _machine_pace(timeline: Timeline) -> Fraction:
+    """One iteration of a loop run as fast as it goes: the program time is the time the
+    iteration took to compute (our own drawing left out), at least 1/MAX_RATE s."""
+    now = time.perf_counter()
+    took = now - timeline.wall if timeline.wall is not None else 0.0
+    return max(Fraction(1, MAX_RATE), Fraction(took).limit_denominator(10**9))
 
 
 def sleep(dt) -> None:

@@ -211,3 +211,20 @@ def test_input_with_no_terminal_answers_and_says_so(tmp_path):
     assert proc.returncode == 0 and "made 1" in proc.stdout
     assert "input('How many? '): no user at a terminal; answered '1'" in proc.stderr
     assert math.isfinite(1.0)
+
+
+def test_rate_above_the_machine_runs_at_the_machines_pace(tmp_path):
+    """``rate(1e15)`` means "as fast as it goes": a slow iteration takes the program time
+    it took, so a heavy loop still reaches the end of a short video."""
+    prog = write(tmp_path, """
+        from vpython import *
+        import time
+        b = sphere()
+        while True:
+            rate(1e15)
+            time.sleep(0.01)             # a heavy iteration: 10 ms of computing
+            b.pos.x += 0.01
+    """)
+    result = run_program(prog, tmp_path / "x.mp4", duration=0.5, fps=10, page=False)
+    assert result.ended == "duration" and result.frames == 5
+    assert any("ran as fast as it goes" in n for n in result.notes)
