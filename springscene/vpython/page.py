@@ -31,6 +31,7 @@ _MEDIA_KINDS = ("video", "image", "gif")
 _STYLE = """\
 body { font-family: Verdana, Arial, Helvetica, sans-serif; font-size: 15px; margin: 10px; }
 .vp-title, .vp-caption { white-space: pre; }
+.vp-print { border: 1px solid #ccc; padding: 4px; max-height: 300px; overflow: auto; }
 .vp-canvas { display: inline-block; margin: 4px 0; }
 .vp-canvas video, .vp-canvas img { display: block; }
 .vp-graph { display: block; margin: 6px 0; }
@@ -133,7 +134,7 @@ def _relative(ref: str, base: Path) -> str:
 
 def write_page(path: str | Path, *, title_html: str, caption_html: str, media: str,
                media_kind: str, width: int, height: int, graph_images: list[str],
-               widgets: list) -> Path:
+               widgets: list, printed: str = "") -> Path:
     """Write the page VPython would show, atomically.
 
     Parameters
@@ -152,6 +153,8 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         PNGs of the graphs, in order (file names or paths).
     widgets : list
         Controls and wtexts in the order made (:func:`.widgets.widgets_in_order`).
+    printed : str
+        What the program printed: GlowScript shows it in a box below the canvas.
 
     Returns
     -------
@@ -182,6 +185,7 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         '<div class="vp-graphs">',
         *_graphs_html(graph_images, base),
         "</div>",
+        *([f'<pre class="vp-print">{html.escape(printed)}</pre>'] if printed else []),
         "</body>",
         "</html>",
         "",

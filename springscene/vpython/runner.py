@@ -135,6 +135,28 @@ def _restore_modules(saved: dict) -> None:
             sys.modules[name] = module
 
 
+class _Printed:
+    """The program's standard output, passed on and kept (up to ``limit`` characters)
+    for the page, where GlowScript shows what a program prints."""
+
+    def __init__(self, out, limit: int = 100_000) -> None:
+        self._out, self._limit = out, limit
+        self.parts: list[str] = []
+        self.size = 0
+
+    def write(self, text: str) -> int:
+        if self.size < self._limit:
+            self.parts.append(text[:self._limit - self.size])
+            self.size += len(self.parts[-1])
+        return self._out.write(text)
+
+    def __getattr__(self, name: str):
+        return getattr(self._out, name)
+
+    def text(self) -> str:
+        return "".join(self.parts)
+
+
 class _Film:
     """Takes the frames: draws the shown canvas, adds the graph strip, feeds the writer."""
 
@@ -147,6 +169,7 @@ class _Film:
         self.writer = None
         self.strip = None
         self.graphs_only = False            # no 3D object at all: the video is the graphs
+        self.printed: _Printed | None = None
         self.frames = 0
         self.notes: list[str] = []
 
@@ -242,7 +265,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
                                time.perf_counter() - start, ended,
                                size=film.writer.size if film.writer is not None else None,
                                dialect=dialect.name)
-    result.images = images + _write_extras(out, result, page, still)
+    result.images = images + _write_extras(out, result, page, still, film.printed.text())
     result.notes = film.notes + widgets.notes()
     if timeline.capped_rate is not None:
         result.notes.append(f"rate({timeline.capped_rate:g}) ran as fast as it goes: each "
@@ -307,6 +330,8 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
         names.update(glowscript.names(vp), __gs_add__=dialects.gs_add,
                      __gs_push__=dialects.gs_push)
     ended, ok = "program", False
+    saved_stdout = sys.stdout
+    sys.stdout = film.printed = _Printed(saved_stdout)
     try:
         exec(code, names)
         ok = True
@@ -322,6 +347,7 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
     except BaseException as exc:     # the program's own error, with its own traceback
         raise ProgramError(_user_traceback(exc)) from None
     finally:
+        sys.stdout = saved_stdout
         runtime.start(None)
         runtime.set_capture(None)
         canvas._measurer = None
@@ -344,7 +370,8 @@ def _old_time_clock(dialect: dialects.Dialect):
     return lambda: delattr(time, "clock")
 
 
-def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> list[Path]:
+def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
+                  printed: str = "") -> list[Path]:
     """The program's graphs as PNGs and ``page.html`` beside ``out``."""
     written = list(write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if page:
@@ -355,5 +382,5 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool) -> 
                                  width=result.size[0] if result.size else int(cv.width),
                                  height=result.size[1] if result.size else int(cv.height),
                                  graph_images=[p.name for p in written],
-                                 widgets=widgets.widgets_in_order())
+                                 widgets=widgets.widgets_in_order(), printed=printed)
     return written

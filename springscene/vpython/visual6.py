@@ -129,6 +129,19 @@ def _numpy_names() -> dict[str, Any]:
     return names
 
 
+def _numpy_or_builtin(numpy_f, builtin_f):
+    """numpy's ``sum``/``any``/``all`` (``from visual import *`` bound them: ``sum(a, -1)``
+    is over an axis), but Python's for a generator, which numpy 1 also handed to Python's
+    and numpy 2 refuses (``np.any(x > 0 for x in a)`` would be always True)."""
+    def f(a, *args, **kwargs):
+        if isinstance(a, types.GeneratorType) or (iter(a) is a if hasattr(a, "__iter__")
+                                                   else False):
+            return builtin_f(a, *args, **kwargs)
+        return numpy_f(a, *args, **kwargs)
+    f.__name__ = builtin_f.__name__
+    return f
+
+
 class _Random:
     """``random`` as ``from visual import *`` left it, ``numpy.random``
     (``random.uniform(a, b)``, ``random.randint``), that can also be called as
@@ -160,7 +173,9 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
                  display=vp.canvas, crayola=vp.color, color=vp.color, materials=materials,
                  frame=frame, random=_Random(), exit=_exit, scene=vp.scene,
                  version=("6.11", "release"))
-    names["sum"], names["any"], names["all"] = np.sum, np.any, np.all
+    names["sum"], names["any"], names["all"] = (_numpy_or_builtin(np.sum, sum),
+                                                _numpy_or_builtin(np.any, any),
+                                                _numpy_or_builtin(np.all, all))
     names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
     return names
 

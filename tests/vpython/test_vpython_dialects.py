@@ -162,6 +162,9 @@ def test_vpython6_namespace(lenient):
     assert names["cross"]((1, 0, 0), (0, 1, 0)) == vector(0, 0, 1)
     assert names["dot"](np.array([1, 2]), np.array([3, 4])) == 11
     assert names["true"] is True and names["false"] is False
+    assert names["any"](x > 5 for x in range(4)) is False           # a generator: Python's
+    assert names["sum"](x for x in range(4)) == 6
+    assert list(names["sum"](np.ones((2, 3)), -1)) == [3, 3]         # an array: numpy's
     assert names["display"] is vp.canvas and names["version"][0] == "6.11"
     assert names["float_"] is np.float64 and names["Inf"] == math.inf
 
@@ -295,3 +298,16 @@ def test_glowscript_list_append_of_several_items_is_a_push():
     tree = dialects.transform(ast.parse("L = [1]\nL.append(2, 3)\nL.append(4)\n"))
     exec(compile(tree, "<t>", "exec"), names)
     assert names["L"] == [1, 2, 3, 4]
+
+
+def test_what_a_program_prints_is_on_its_page_too(tmp_path):
+    prog = write(tmp_path, """
+        GlowScript 3.2 VPython
+        sphere()
+        print("KE = " + 2.0 + " J", "<b>")
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0, proc.stderr
+    assert "KE = 2 J <b>" in proc.stdout                        # to the terminal, as before
+    page = (tmp_path / "page.html").read_text()
+    assert '<pre class="vp-print">KE = 2 J &lt;b&gt;\n</pre>' in page
