@@ -48,8 +48,10 @@ from .solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring
                      sphere)
 from .text3d import text
 from .textures import bumpmaps, textures
-from .vector import (adjust_axis, adjust_up, comp, cross, diff_angle, dot, hat, mag, mag2,
-                     norm, object_rotate, proj, rotate, vec, vector)
+from .textures import reset as _reset_textures
+from .vector import (comp, cross, diff_angle, dot, hat, mag, mag2, norm, proj, rotate, vec,
+                     vector)
+from .vector_turns import adjust_axis, adjust_up, object_rotate
 from .widgets import button, checkbox, menu, radio, slider, winput, wtext
 from .widgets import reset as _reset_widgets
 from .widgets import skipped as _skipped
@@ -98,6 +100,7 @@ def reset() -> None:
     _forget_graph_figures()
     _reset_widgets()
     attachments.reset()
+    _reset_textures()
     scene = canvas()
 
 

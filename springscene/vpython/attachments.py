@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from . import runtime
 from .base import _current_canvas
 from .curves import curve, points
 from .solids import arrow
@@ -51,6 +52,7 @@ class attach_trail:
         self.pps = pps
         self.canvas = obj.canvas if is_object else (canvas or _current_canvas())
         self._last = None
+        self._last_time = None
         self._run = True
         self._pieces: list = []
         self._new_piece()
@@ -78,6 +80,11 @@ class attach_trail:
         pos = self._position()
         if pos is None or (self._last is not None and pos.equals(self._last)):
             return
+        if self.pps and self.pps > 0 and runtime.current() is not None:   # points a second
+            now = runtime.current().clock
+            if self._last_time is not None and now - self._last_time < 1 / self.pps:
+                return
+            self._last_time = now
         self._trail.append(pos=vector(pos), color=vector(self.color), radius=self.radius)
         self._last = vector(pos)
 

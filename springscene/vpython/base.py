@@ -24,6 +24,8 @@ class _Base:
 
     def _register(self, args: dict) -> None:
         cv = args.pop("canvas", None)
+        if cv is None:
+            cv = args.pop("display", None)     # VPython 6's name for it
         self._canvas = cv if cv is not None else _current_canvas()
         self._dirty = True
         self._canvas._add(self)
@@ -31,7 +33,7 @@ class _Base:
         if args.get("frame") is not None:
             self.frame = args.pop("frame")
         args.pop("frame", None)
-        args.pop("display", None)          # VPython 6's name for the canvas (one here)
+        args.pop("display", None)
 
     @property
     def frame(self):

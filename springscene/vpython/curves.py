@@ -14,7 +14,7 @@ import numpy as np
 
 from .base import _Base
 from .checks import _vec
-from .vector import vector
+from .vector import is_lenient, vector
 
 
 def _point(value, constructing: bool) -> dict:
@@ -26,17 +26,26 @@ def _point(value, constructing: bool) -> dict:
         if "color" in pt:
             pt["color"] = _vec(pt["color"], "color")
         return pt
-    if isinstance(value, (vector, list, tuple)):
+    if isinstance(value, (vector, list, tuple, np.ndarray)):
         return {"pos": _vec(value, "pos")}
     raise AttributeError("Point pos must be a vector" if constructing
                          else "Point information must be a vector or a dictionary")
+
+
+def _columns(kwargs: dict) -> np.ndarray:
+    """VPython 6's ``x=``, ``y=``, ``z=`` arrays (or numbers) as N x 3 points."""
+    cols = [np.atleast_1d(np.asarray(kwargs.pop(c, 0.0), dtype=float)) for c in "xyz"]
+    n = max(len(c) for c in cols)
+    return np.column_stack([np.broadcast_to(c, (n,)) for c in cols])
 
 
 def _flatten(args: tuple) -> list:
     """``append(v)``, ``append(v1, v2)``, ``append([v1, v2])`` and ``append(pos=[...])`` alike."""
     out = []
     for a in args:
-        if isinstance(a, (list, tuple)) and a and not all(
+        if isinstance(a, np.ndarray) and a.ndim == 2:       # VPython 6: an N x 3 array
+            out.extend(a)
+        elif isinstance(a, (list, tuple)) and a and not all(
                 isinstance(c, (int, float)) and not isinstance(c, bool) for c in a):
             out.extend(a)
         else:
@@ -61,6 +70,8 @@ class _PointList(_Base):
         self._size_units = "pixels"
         self._cache = None      # arrays of the first points, kept while only appends happen
         pos = kwargs.pop("pos", None)
+        if pos is None and is_lenient() and any(c in kwargs for c in "xyz"):
+            pos = _columns(kwargs)               # VPython 6: curve(x=arange(...), y=...)
         if pos is not None and args:
             raise AttributeError("Malformed constructor")
         for name in ("color", "origin"):
@@ -241,6 +252,9 @@ class _PointList(_Base):
             pos, col, rad, vis = (np.concatenate([a, b]) for a, b in zip(kept,
                                                                          (pos, col, rad, vis)))
         self._cache = (len(self._pts), pos, col, rad, vis)
+        placed = self.__dict__.get("_world_transform")     # points in a VPython 6 frame
+        if placed is not None:
+            pos = pos @ placed[1].T + placed[0]
         if vis.all():
             return pos, col, rad
         return pos[vis], col[vis], rad[vis]

@@ -20,7 +20,10 @@ names to run it with.
 from __future__ import annotations
 
 import ast
+import math
+import numbers
 import re
+from decimal import Decimal
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -99,29 +102,82 @@ class _TextPlus(ast.NodeTransformer):
         self.generic_visit(node)
         if isinstance(node.op, ast.Add) and _is_text(node.value) and \
                 isinstance(node.target, ast.Name):
-            value = ast.Call(func=ast.Name("__gs_add__", ast.Load()),
+            value = ast.Call(func=ast.Name("__gs_iadd__", ast.Load()),
                              args=[ast.Name(node.target.id, ast.Load()), node.value],
                              keywords=[])
             return ast.copy_location(ast.Assign(targets=[node.target], value=value), node)
         return node
 
 
+def _js_number(x: float) -> str:
+    """A number as JavaScript writes it: ``2.0`` → ``2``, ``1e-05`` → ``0.00001``,
+    ``1e-07`` → ``1e-7``, ``nan`` → ``NaN``, ``inf`` → ``Infinity``."""
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    x = float(x)
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    if x.is_integer() and abs(x) < 1e21:
+        return str(int(x))
+    text = repr(x)
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    e = int(exponent)
+    if -6 <= e < 21:
+        return format(Decimal(text), "f")
+    return f"{mantissa}e{'+' if e > 0 else '-'}{abs(e)}"
+
+
+def _js_scalar(value: Any) -> bool:
+    """A value JavaScript's ``+`` writes into text by itself (a number, a bool, None, a
+    vector); anything else keeps Python's ``+`` (and its ``__radd__``)."""
+    return value is None or isinstance(value, numbers.Number) or hasattr(value, "_xyz")
+
+
 def js_text(value: Any) -> str:
     """A value as JavaScript's ``+`` writes it into a string (``1.0`` → ``"1"``)."""
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, float) and value.is_integer() and abs(value) < 1e21:
-        return str(int(value))
+    if value is None:
+        return "null"
+    if isinstance(value, numbers.Number):
+        return _js_number(value)
+    if hasattr(value, "_xyz"):
+        return "< " + ", ".join(_js_number(c) for c in value._xyz()) + " >"
     return str(value)
 
 
 def gs_add(a: Any, b: Any) -> Any:
-    """``a + b`` as GlowScript does it: text joined to anything, else Python's ``+``."""
-    if isinstance(a, str) and not isinstance(b, str):
+    """``a + b`` as GlowScript does it: text and a number (bool, vector) joined, else
+    Python's ``+``."""
+    if isinstance(a, str) and not isinstance(b, str) and _js_scalar(b):
         return a + js_text(b)
-    if isinstance(b, str) and not isinstance(a, str):
+    if isinstance(b, str) and not isinstance(a, str) and _js_scalar(a):
         return js_text(a) + b
     return a + b
+
+
+def gs_iadd(a: Any, b: Any) -> Any:
+    """``a += b``: joined as :func:`gs_add` for text and a number, else Python's ``+=``
+    (a list extended in place)."""
+    if isinstance(a, str) or (isinstance(b, str) and _js_scalar(a)):
+        return gs_add(a, b)
+    a += b
+    return a
+
+
+def gs_same(a: Any, b: Any) -> bool:
+    """JavaScript's ``===``, which RapydScript makes of ``is``: numbers, text and bools
+    compare by value (``True is 1`` is false), anything else by identity."""
+    for kind in (bool, str):
+        if isinstance(a, kind) or isinstance(b, kind):
+            return isinstance(a, kind) and isinstance(b, kind) and a == b
+    if isinstance(a, numbers.Number) and isinstance(b, numbers.Number):
+        return a == b
+    return a is b
 
 
 class _IsLiteral(ast.NodeTransformer):
@@ -130,6 +186,14 @@ class _IsLiteral(ast.NodeTransformer):
 
     def visit_Compare(self, node: ast.Compare) -> ast.AST:
         self.generic_visit(node)
+        if len(node.ops) == 1 and isinstance(node.ops[0], (ast.Is, ast.IsNot)) and any(
+                isinstance(x, ast.Constant) and x.value is not None
+                for x in (node.left, node.comparators[0])):
+            same = ast.Call(func=ast.Name("__gs_same__", ast.Load()),
+                            args=[node.left, node.comparators[0]], keywords=[])
+            if isinstance(node.ops[0], ast.IsNot):
+                same = ast.UnaryOp(op=ast.Not(), operand=same)
+            return ast.copy_location(same, node)
         operands = [node.left, *node.comparators]
         ops = []
         for op, left, right in zip(node.ops, operands, operands[1:]):
@@ -240,3 +304,8 @@ def compile_program(source: str, filename: str, dialect: Dialect):
         return compile(source, filename, "exec")
     return compile(transform(_parse_glowscript(source, filename)), filename, "exec")
 
+
+
+#: the helpers :func:`transform` writes calls to, by the names it gives them
+HELPERS = {"__gs_add__": gs_add, "__gs_iadd__": gs_iadd, "__gs_same__": gs_same,
+           "__gs_push__": gs_push}

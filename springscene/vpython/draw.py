@@ -269,7 +269,7 @@ class Renderer:
         self._sync_lights()
         self._sync_title()
         self._place_camera()
-        self._thin_lines_on_first_view()
+        self._thin_for_this_view()
         self._sync_labels(labels)
 
     def _key(self, obj) -> tuple:
@@ -344,7 +344,8 @@ class Renderer:
             self._bounds[key] = a["bounds"]
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
-        elif kind == "tube" and self.view is not None:   # points under a pixel apart merged
+        elif kind == "tube":                # points under a pixel apart merged
+            batch.objs, batch.view_key = objs, self._view_key()
             meshes = [m for m in (_tube(o, self.view) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
         else:
@@ -420,7 +421,7 @@ class Renderer:
             return
         self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
         if key[0] == "lines":       # sub-pixel segments do not rasterise: thin them out
-            batch.objs, batch.thinned = objs, self.view is not None
+            batch.objs, batch.view_key = objs, self._view_key()
             if self.view is not None:
                 chunks = [_thin_line(c, self.view) for c in chunks]
         points = np.concatenate([c[0] for c in chunks])
@@ -437,10 +438,18 @@ class Renderer:
                 cells = np.concatenate(parts)
         batch.set(points, None, colors, cells, signature, style)
 
-    def _thin_lines_on_first_view(self) -> None:
-        """Lines drawn before there was a camera to measure pixels by, thinned now."""
+    def _view_key(self):
+        v = self.view
+        return None if v is None else (tuple(v.position), tuple(v.focal_point), tuple(v.up),
+                                       v.fov)
+
+    def _thin_for_this_view(self) -> None:
+        """Thin lines and tubes thinned for another camera (or none: the first frame, or
+        the camera moved this frame) are thinned again for this one."""
+        now = self._view_key()
         for key, batch in self._batches.items():
-            if key[0] == "lines" and not getattr(batch, "thinned", True):
+            if key[0] in ("lines", "tube") and getattr(batch, "view_key", now) != now \
+                    and getattr(batch, "objs", None):
                 self._draw(batch, key, batch.objs)
 
     # -- the rest of the picture ---------------------------------------------------------
@@ -570,9 +579,12 @@ def _thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):
     if len(pos) <= 2:
         return chunk
     pixels = view.project(pos)
-    along = np.concatenate([[0.0], np.cumsum(np.linalg.norm(np.diff(pixels, axis=0), axis=1))])
+    seen = np.isfinite(pixels).all(axis=1)        # a point in the camera's plane: kept
+    seg = np.linalg.norm(np.diff(pixels, axis=0), axis=1)
+    seg = np.where(np.isfinite(seg), seg, min_px)
+    along = np.concatenate([[0.0], np.cumsum(seg)])
     step = np.floor(along / min_px)
-    keep = np.concatenate([[True], step[1:] != step[:-1]])
+    keep = np.concatenate([[True], step[1:] != step[:-1]]) | ~seen
     keep[-1] = True
     if keep.all():
         return chunk

@@ -87,6 +87,8 @@ class frame:
             if node is self:
                 raise ValueError("a frame cannot be inside itself")
             node = node._frame
+        if self._frame is not None and self in self._frame._children:
+            self._frame._children.remove(self)
         self._frame = parent
         if parent is not None:
             parent._children.append(self)
@@ -170,6 +172,11 @@ def _world(obj, o: np.ndarray, R: np.ndarray) -> dict:
     return moved
 
 
+def _world_points(obj, o: np.ndarray, R: np.ndarray) -> dict:
+    """A ``points`` object has no origin: its point positions are placed as they are read."""
+    return {"_world_transform": (o, R)}
+
+
 @contextmanager
 def in_world(objects: Iterable) -> Iterator[None]:
     """Within the block, every framed object's ``pos``/``axis``/``up`` (a curve's
@@ -180,8 +187,8 @@ def in_world(objects: Iterable) -> Iterator[None]:
         if f is None:
             continue
         o, R = f._placement()
-        moved = _world(obj, o, R)
-        saved.append((obj, {name: obj.__dict__[name] for name in moved}))
+        moved = _world_points(obj, o, R) if obj._kind == "points" else _world(obj, o, R)
+        saved.append((obj, {name: obj.__dict__.get(name) for name in moved}))
         obj.__dict__.update(moved)
     try:
         yield

@@ -65,8 +65,8 @@ def _lenient_math(name: str, on_error: float):
     def g(*args):
         try:
             return f(*args)
-        except ValueError:
-            return on_error
+        except ValueError:      # a log of 0 is -Infinity, of a negative number NaN
+            return on_error if not (name.startswith("log") and args[0] < 0) else _NAN
     g.__name__ = name
     g.__doc__ = f"math.{name}, giving {on_error} where math raises (as JavaScript's Math)."
     return g

@@ -327,8 +327,7 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
              "input": widgets.program_input}
     if dialect.kind == "glowscript":
-        names.update(glowscript.names(vp), __gs_add__=dialects.gs_add,
-                     __gs_push__=dialects.gs_push)
+        names.update(glowscript.names(vp), **dialects.HELPERS)
     ended, ok = "program", False
     saved_stdout = sys.stdout
     sys.stdout = film.printed = _Printed(saved_stdout)

@@ -12,6 +12,7 @@ When the run has all its frames, the call raises :class:`Stop`, a
 
 from __future__ import annotations
 
+import math
 import time
 from fractions import Fraction
 from typing import Callable
@@ -62,10 +63,11 @@ class Timeline:
     def advance(self, span: Fraction) -> None:
         """Show the scene as it is for ``span`` program seconds."""
         end = self.clock + span
-        if self.on_render is not None:       # a browser renders 60 times a second
-            while Fraction(self.renders, RENDERS_PER_SECOND) < end:
-                self.on_render()
-                self.renders += 1
+        if self.on_render is not None and Fraction(self.renders, RENDERS_PER_SECOND) < end:
+            # a browser renders 60 times a second; while the program waits nothing moves,
+            # so the renders due in this span see one scene: one call stands for them all
+            self.on_render()
+            self.renders = math.ceil(end * RENDERS_PER_SECOND)
         while Fraction(self.frames, self.fps) < end:
             if self.max_frames is not None and self.frames >= self.max_frames:
                 break
@@ -114,6 +116,7 @@ def rate(n) -> None:
             _current.advance(_machine_pace(_current))
             _current.wall = time.perf_counter()
             return
+        _current.wall = None
         _current.advance(1 / _span(n, "rate value"))
 
 
@@ -131,12 +134,14 @@ def sleep(dt) -> None:
     if span < 0:
         raise ValueError("sleep time must not be negative")
     if _current is not None:
+        _current.wall = None
         _current.advance(span)
 
 
 def wait() -> None:
     """A wait for a user who never comes: one video frame of program time passes."""
     if _current is not None:
+        _current.wall = None
         _current.advance(Fraction(1, _current.fps))
 
 

@@ -32,9 +32,8 @@ Additions for springscene (VPython programs cannot tell):
   new vectors with none (``+v`` too, which in VPython returns ``v`` itself);
 - ``_xyz()``; ``_x_set``/``_y_set``/``_z_set`` (no notifying); :func:`as_vector`.
 
-``adjust_up``, ``adjust_axis`` and ``object_rotate`` are VPython's helpers for
-an object's axis and up; like VPython's they write components directly and
-notify no one: the object that calls them knows what changed.
+VPython's helpers that turn an object's axis and up (``adjust_up``, ``adjust_axis``,
+``object_rotate``) are in :mod:`.vector_turns`.
 """
 
 from __future__ import annotations
@@ -44,9 +43,8 @@ from math import acos, cos, pi, sin, sqrt
 from operator import index as _index
 from random import random as _random
 
-__all__ = ['adjust_axis', 'adjust_up', 'comp', 'cross', 'diff_angle', 'dot',
-           'hat', 'mag', 'mag2', 'norm', 'object_rotate', 'proj', 'rotate',
-           'vec', 'vector']
+__all__ = ['comp', 'cross', 'diff_angle', 'dot', 'hat', 'mag', 'mag2', 'norm', 'proj',
+           'rotate', 'vec', 'vector']
 
 _Real = numbers.Real
 _new = object.__new__
@@ -103,6 +101,7 @@ class vector:
     __slots__ = ('_x', '_y', '_z', '_on_change')
 
     __hash__ = None     # VPython's vectors are mutable and unhashable
+    __array_ufunc__ = None   # numpy leaves ``np.float64(2) * v`` to the vector
 
     def __iter__(self):      # not iterable, as in VPython 7; a sequence in VPython 6
         if not _lenient:
@@ -287,6 +286,16 @@ class vector:
             return v
         if _lenient and _is_triple(other):
             return self.__sub__(vector(*_lenient_components((other,))))
+        return NotImplemented
+
+    def __radd__(self, other):          # VPython 6: (1, 2, 3) + v
+        if _lenient and _is_triple(other):
+            return vector(*_lenient_components((other,))).__add__(self)
+        return NotImplemented
+
+    def __rsub__(self, other):
+        if _lenient and _is_triple(other):
+            return vector(*_lenient_components((other,))).__sub__(self)
         return NotImplemented
 
     def __mul__(self, other):
@@ -531,70 +540,3 @@ def diff_angle(A: vector, B: vector) -> float:
 def rotate(A: vector, angle: float = 0.0, axis: vector | None = None) -> vector:
     """``A.rotate(angle, axis)``."""
     return A.rotate(angle, axis)
-
-
-def _turn(v: vector, angle: float, axis: vector) -> None:
-    """Rotate ``v`` in place without notifying (VPython's ``rotate_in_place``)."""
-    v._x, v._y, v._z = v._rotation(angle, axis)
-
-
-def object_rotate(objaxis: vector, objup: vector, angle: float, axis: vector) -> None:
-    """Turn an object's ``axis`` and ``up`` in place by ``angle`` about ``axis``."""
-    _turn(objaxis, angle, axis)
-    _turn(objup, angle, axis)
-
-
-def adjust_up(oldaxis: vector, newaxis: vector, up: vector, save_oldaxis):
-    """VPython's update of ``up`` when an object's axis changes from ``oldaxis``
-    to ``newaxis``: ``up`` turns with the axis unless they are perpendicular.
-
-    Writes ``up`` and ``oldaxis`` (set to ``newaxis``) in place, without
-    notifying; returns the saved axis to restore after a zero axis, or None.
-    """
-    if abs(newaxis._x) + abs(newaxis._y) + abs(newaxis._z) == 0:
-        if save_oldaxis is None:
-            save_oldaxis = oldaxis
-        return save_oldaxis
-    if save_oldaxis is not None:
-        oldaxis._x = save_oldaxis._x
-        oldaxis._y = save_oldaxis._y
-        oldaxis._z = save_oldaxis._z
-        save_oldaxis = None
-    if newaxis.dot(up) != 0:
-        angle = oldaxis.diff_angle(newaxis)
-        if angle > 1e-6:
-            if abs(angle - pi) < 1e-6:
-                up._x = -up._x
-                up._y = -up._y
-                up._z = -up._z
-            else:
-                _turn(up, angle, oldaxis.cross(newaxis))
-    oldaxis._x = newaxis._x
-    oldaxis._y = newaxis._y
-    oldaxis._z = newaxis._z
-    return save_oldaxis
-
-
-def adjust_axis(oldup: vector, newup: vector, axis: vector, save_oldup):
-    """VPython's update of ``axis`` when an object's up changes (the mirror of
-    :func:`adjust_up`); writes in place without notifying."""
-    if abs(newup._x) + abs(newup._y) + abs(newup._z) == 0:
-        if save_oldup is None:
-            save_oldup = oldup
-        return save_oldup
-    if save_oldup is not None:
-        oldup = save_oldup      # as VPython: the saved vector stands in for oldup
-        save_oldup = None
-    if newup.dot(axis) != 0:
-        angle = oldup.diff_angle(newup)
-        if angle > 1e-6:
-            if abs(angle - pi) < 1e-6:
-                axis._x = -axis._x
-                axis._y = -axis._y
-                axis._z = -axis._z
-            else:
-                _turn(axis, angle, oldup.cross(newup))
-    oldup._x = newup._x
-    oldup._y = newup._y
-    oldup._z = newup._z
-    return save_oldup

@@ -36,7 +36,11 @@ from .visual6_extras import button, controls, ghistogram, materials, menu, slide
 # numpy names that would shadow a builtin VPython 6 programs use as the builtin
 _NOT_FROM_NUMPY = {"abs", "max", "min", "round", "pow", "bool", "divmod", "int", "float",
                    "complex", "object", "str", "random", "test", "show_config", "info",
-                   "typing", "version", "exceptions"}
+                   "typing", "version", "exceptions",
+                   # numpy 2's new aliases of math's names: VPython 6 (numpy 1) had math's
+                   "acos", "asin", "atan", "atan2", "acosh", "asinh", "atanh", "concat",
+                   "permute_dims", "vecdot", "bitwise_left_shift", "bitwise_right_shift",
+                   "bitwise_invert"}
 # names numpy 1.x's star import gave and numpy 2 removed
 _NUMPY1 = {"float_": np.float64, "complex_": np.complex128, "round_": np.round,
            "product": np.prod, "cumproduct": np.cumprod, "alltrue": np.all,
@@ -130,14 +134,18 @@ def _numpy_names() -> dict[str, Any]:
 
 
 def _numpy_or_builtin(numpy_f, builtin_f):
-    """numpy's ``sum``/``any``/``all`` (``from visual import *`` bound them: ``sum(a, -1)``
-    is over an axis), but Python's for a generator, which numpy 1 also handed to Python's
-    and numpy 2 refuses (``np.any(x > 0 for x in a)`` would be always True)."""
+    """numpy's ``sum``/``any``/``all`` for an array or with an axis (``from visual import *``
+    bound numpy's: ``sum(a, -1)``), Python's for anything else (a generator, a list, a
+    dict's values), whose meaning numpy would change (``np.any(x > 0 for x in a)`` is
+    always True)."""
     def f(a, *args, **kwargs):
-        if isinstance(a, types.GeneratorType) or (iter(a) is a if hasattr(a, "__iter__")
-                                                   else False):
-            return builtin_f(a, *args, **kwargs)
-        return numpy_f(a, *args, **kwargs)
+        if isinstance(a, np.ndarray) or ((args or kwargs) and builtin_f is not sum):
+            return numpy_f(a, *args, **kwargs)
+        if builtin_f is sum and args and not isinstance(args[0], (int, np.integer)):
+            return sum(a, *args)             # sum(vectors, vector(0, 0, 0))
+        if args or kwargs:
+            return numpy_f(a, *args, **kwargs)          # sum(a, -1): over an axis
+        return builtin_f(a)
     f.__name__ = builtin_f.__name__
     return f
 

@@ -70,7 +70,7 @@ def test_gs_add_joins_text_as_javascript(a, b, expected):
 
 def _run_transformed(src: str) -> dict:
     tree = dialects.transform(ast.parse(textwrap.dedent(src)))
-    names = {"__gs_add__": dialects.gs_add}
+    names = dict(dialects.HELPERS)
     exec(compile(tree, "<t>", "exec"), names)
     return names
 
@@ -294,7 +294,7 @@ def test_vpython6_controls_wait_for_no_one(tmp_path):
 
 
 def test_glowscript_list_append_of_several_items_is_a_push():
-    names = {"__gs_push__": dialects.gs_push}
+    names = dict(dialects.HELPERS)
     tree = dialects.transform(ast.parse("L = [1]\nL.append(2, 3)\nL.append(4)\n"))
     exec(compile(tree, "<t>", "exec"), names)
     assert names["L"] == [1, 2, 3, 4]
@@ -311,3 +311,23 @@ def test_what_a_program_prints_is_on_its_page_too(tmp_path):
     assert "KE = 2 J <b>" in proc.stdout                        # to the terminal, as before
     page = (tmp_path / "page.html").read_text()
     assert '<pre class="vp-print">KE = 2 J &lt;b&gt;\n</pre>' in page
+
+
+def test_glowscript_leniencies_keep_python_meanings():
+    names = _run_transformed("""
+        class Money:
+            def __init__(self, n): self.n = n
+            def __radd__(self, other): return other + "$" + str(self.n)
+        letters = []
+        letters += "ab"
+        paid = "total " + Money(5)
+        flag = True
+        same = flag is 1
+        one = 1 is 1.0
+        key = "left"
+        left = key is "left"
+        tiny = "dt = " + 1e-7 + ", " + 1e-5 + ", " + float("nan")
+    """)
+    assert names["letters"] == ["a", "b"] and names["paid"] == "total $5"
+    assert (names["same"], names["one"], names["left"]) == (False, True, True)
+    assert names["tiny"] == "dt = 1e-7, 0.00001, NaN"

@@ -228,3 +228,70 @@ def test_rate_above_the_machine_runs_at_the_machines_pace(tmp_path):
     result = run_program(prog, tmp_path / "x.mp4", duration=0.5, fps=10, page=False)
     assert result.ended == "duration" and result.frames == 5
     assert any("ran as fast as it goes" in n for n in result.notes)
+
+
+def test_a_thin_circle_is_thinned_again_when_the_camera_zooms(tmp_path):
+    """Thinned for the first (far) view, a 2000-point circle must be a circle again once
+    the program zooms in, not the polygon of a few points the far view left."""
+    img = still(tmp_path, """
+        from vpython import *
+        c = curve(color=color.yellow)
+        for i in range(2001):
+            c.append(vector(cos(2*pi*i/2000), sin(2*pi*i/2000), 0))
+        scene.range = 300
+        rate(10)
+        scene.range = 1.2
+    """)
+    yellow = (img[..., 0] > 100) & (img[..., 1] > 100) & (img[..., 2] < 60)
+    rows, cols = np.nonzero(yellow)
+    r = np.hypot(cols - 320, rows - 200)
+    assert abs(np.median(r) - 200 / 1.2) < 3 and r.std() < 2.5     # on the circle
+
+
+def test_vpython6_display_keyword_points_and_trails_in_frames(tmp_path):
+    img = still(tmp_path, """
+        from visual import *
+        first = display(width=400, height=400, range=5)
+        second = display(width=300, height=300)
+        sphere(display=first, pos=(-3, 0, 0), radius=0.5, color=color.blue)
+        first.select()                          # what follows goes to the first display
+        f = frame(pos=(3, 2, 0))
+        points(frame=f, pos=[(0, -2, 0)], size=12, color=color.red)
+        ball = sphere(frame=f, pos=(0, 0, 0), radius=0.2, color=color.green, make_trail=True)
+        for i in range(10):
+            rate(100)
+            ball.pos = ball.pos + (0, -0.1, 0)
+        print(2 * 0.5 * arange(1)[0] + 1.0, (1, 2, 3) + vector(1, 0, 0))
+    """)
+    assert img.shape[:2] == (400, 400)                        # the first display is shown
+    bx, by = centre_of(blue(img))
+    rx, ry = centre_of(red(img))                              # the point at (3, 0) in world
+    assert abs(bx - 80) < 4 and abs(by - 200) < 4 and abs(rx - 320) < 4 and abs(ry - 200) < 4
+
+
+def test_vpython6_numpy_scalars_times_vectors_stay_vectors(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        v = arange(3)[2] * vector(1, 0, 0)
+        w = acos(1.0) * vector(0, 1, 0) + (1, 2, 3) - vector(0, 2, 0)
+        print(type(v).__name__, v.x, w)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.splitlines()[0] == "vector 2.0 <1, 0, 3>"
+
+
+def test_attach_trail_pps_and_a_long_sleep_are_quick(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        t = attach_trail(b, pps=5)
+        for i in range(100):
+            rate(100)
+            b.pos.x += 0.01
+        print(len(t._trail._pts))
+        sleep(100000)
+    """)
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.mp4", "--duration", "2")
+    assert proc.returncode == 0, proc.stderr
+    assert 4 <= int(proc.stdout.splitlines()[0]) <= 6           # 1 s at 5 points a second

@@ -16,6 +16,7 @@ from springscene.vpython import vmath
 import importlib
 
 V = importlib.import_module("springscene.vpython.vector")   # the module (the package exports the class)
+from springscene.vpython import vector_turns as T
 from springscene.vpython.vector import (as_vector, comp, cross, diff_angle, dot, hat, mag,
                                         mag2, norm, proj, rotate, vec, vector)
 
@@ -308,7 +309,7 @@ def test_rotate_is_vpythons_formula_bit_for_bit():
 def test_adjust_up_hanging_spring():
     """A spring's axis turned from (1,0,0) to straight down turns up from y to x."""
     axis, up = vector(1, 0, 0), vector(0, 1, 0)
-    saved = V.adjust_up(axis, vector(0, -0.2, 0), up, None)
+    saved = T.adjust_up(axis, vector(0, -0.2, 0), up, None)
     assert saved is None
     assert axis == vector(0, -0.2, 0)
     assert xyz(up) == pytest.approx((1, 0, 0), abs=1e-15)
@@ -316,15 +317,15 @@ def test_adjust_up_hanging_spring():
 
 def test_adjust_up_leaves_perpendicular_up_and_saves_zero_axis():
     axis, up = vector(1, 0, 0), vector(0, 1, 0)
-    V.adjust_up(axis, vector(0, 0, 2), up, None)      # new axis already square to up
+    T.adjust_up(axis, vector(0, 0, 2), up, None)      # new axis already square to up
     assert up == vector(0, 1, 0) and axis == vector(0, 0, 2)
-    saved = V.adjust_up(axis, vector(0, 0, 0), up, None)
+    saved = T.adjust_up(axis, vector(0, 0, 0), up, None)
     assert saved is axis
 
 
 def test_object_rotate_turns_axis_and_up():
     axis, up = vector(1, 0, 0), vector(0, 1, 0)
-    V.object_rotate(axis, up, math.pi / 2, vector(0, 0, 1))
+    T.object_rotate(axis, up, math.pi / 2, vector(0, 0, 1))
     assert xyz(axis) == pytest.approx((0, 1, 0), abs=1e-15)
     assert xyz(up) == pytest.approx((-1, 0, 0), abs=1e-15)
 
@@ -380,8 +381,8 @@ def test_quiet_setters_and_vpython_helpers_do_not_notify():
     axis._on_change = c
     up = vector(0, 1, 0)
     up._on_change = c
-    V.adjust_up(axis, vector(1, 1, 0), up, None)
-    V.object_rotate(axis, up, 0.5, vector(0, 0, 1))
+    T.adjust_up(axis, vector(1, 1, 0), up, None)
+    T.object_rotate(axis, up, 0.5, vector(0, 0, 1))
     assert c.n == 0
 
 
@@ -406,12 +407,15 @@ def test_as_vector():
 
 
 def test_module_exports():
-    want = {'adjust_axis', 'adjust_up', 'comp', 'cross', 'diff_angle', 'dot', 'hat', 'mag',
-            'mag2', 'norm', 'object_rotate', 'proj', 'rotate', 'vec', 'vector'}
-    assert set(V.__all__) == want
+    want = {'comp', 'cross', 'diff_angle', 'dot', 'hat', 'mag', 'mag2', 'norm', 'proj',
+            'rotate', 'vec', 'vector'}
+    assert set(V.__all__) == want and set(T.__all__) == {'adjust_axis', 'adjust_up',
+                                                         'object_rotate'}
     ns = {}
     exec("from springscene.vpython.vector import *", ns)
     assert want <= set(ns) and "as_vector" not in ns
+    exec("from springscene.vpython import *", ns)          # VPython's namespace has all
+    assert {'adjust_axis', 'adjust_up', 'object_rotate'} <= set(ns)
 
 
 # -- the wiki's loop, with these vectors, bit for bit -----------------------------
