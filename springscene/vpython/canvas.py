@@ -23,7 +23,7 @@ import math
 from ..view.scene import LIGHTS
 from . import runtime, widgets
 from .checks import _vec
-from .vector import vector
+from .vector import is_lenient, vector
 
 
 class _Colors:
@@ -323,7 +323,8 @@ class canvas:
     def range(self) -> float:
         if self._autoscale and self._autoscaled_range is None:
             self._measure()
-        return self._range_now()
+        r = self._range_now()
+        return vector(r, r, r) if is_lenient() else r     # VPython 6 read it as a vector
 
     # Set by the runner: autoscale the canvas over the objects it has now (VPython computes
     # the range when autoscale is turned off or the range is read, not only at a render)

@@ -75,6 +75,9 @@ def _is_triple(value) -> bool:      # a 2- or 3-sequence of numbers (tuple, list
 
 def _lenient_components(args: tuple) -> tuple[float, float, float]:   # (), (x, y), (seq,)
     if len(args) == 1:
+        if not _is_triple(args[0]) and hasattr(args[0], "__iter__") and \
+                not isinstance(args[0], (str, bytes)):
+            args = (tuple(args[0]),)        # Python 2's map() was a list: vector(map(...))
         if not _is_triple(args[0]):
             raise TypeError('A vector needs 3 components.')
         args = tuple(args[0])

@@ -223,7 +223,13 @@ def _stroke_text(vp: types.ModuleType):
     VPython 7's 3D text."""
     def text(string: str = "", justify: str = "left", **options: Any):
         options.pop("width", None)
-        return vp.text(text=str(options.pop("text", string)), align=justify, **options)
+        made = vp.text(text=str(options.pop("text", string)), align=justify, **options)
+
+        def reshape(**changes: Any) -> None:          # visual.text's way to change it
+            for name, value in changes.items():
+                setattr(made, name, value)
+        made.reshape = reshape
+        return made
     return text
 
 
