@@ -29,6 +29,8 @@ from ..view import backend, camera
 from ..view.geometry import HelixTube
 from ..view.scene import MULTI_SAMPLES, TITLE_FONT_SIZE, apply_view, grab, title_color
 from . import frames, placement, polygons, shapes, textured, textures
+from .thinning import curve_bounds as _curve_bounds
+from .thinning import thin_line as _thin_line
 from .batches import Batch, TextureCache, TexturedBatch
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
@@ -38,7 +40,7 @@ TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
 # level of detail: (slices, smallest on-screen radius in px that gets them)
 SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
 POINT_RADIUS = 2.5        # px: points of radius 0
-LINE_MIN_SEGMENT_PX = 1.5  # px: shorter segments of a thin line are merged
+SCREEN_THINNED = ("lines", "tube")   # kinds drawn for the camera's view (thinned on screen)
 _TAGS = re.compile(r"<[^>]*>")
 
 
@@ -254,7 +256,11 @@ class Renderer:
                     and not any(o._dirty for o in objs):
                 batch.show()
                 continue
-            self._draw(batch, key, objs)
+            if key[0] in SCREEN_THINNED:    # drawn once the camera is placed, for its view
+                self._bounds[key] = _curve_bounds(objs, key[0])
+                batch.objs, batch.view_key = objs, "to draw"
+            else:
+                self._draw(batch, key, objs)
             batch.members = members
             batch.show()
             for o in objs:
@@ -345,7 +351,7 @@ class Renderer:
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
         elif kind == "tube":                # points under a pixel apart merged
-            batch.objs, batch.view_key = objs, self._view_key()
+            batch.view_key = self._view_key()
             meshes = [m for m in (_tube(o, self.view) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
         else:
@@ -421,7 +427,7 @@ class Renderer:
             return
         self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
         if key[0] == "lines":       # sub-pixel segments do not rasterise: thin them out
-            batch.objs, batch.view_key = objs, self._view_key()
+            batch.view_key = self._view_key()
             if self.view is not None:
                 chunks = [_thin_line(c, self.view) for c in chunks]
         points = np.concatenate([c[0] for c in chunks])
@@ -444,11 +450,11 @@ class Renderer:
                                        v.fov)
 
     def _thin_for_this_view(self) -> None:
-        """Thin lines and tubes thinned for another camera (or none: the first frame, or
-        the camera moved this frame) are thinned again for this one."""
+        """Lines and tubes that changed, or were thinned for another camera, drawn (once)
+        for this one: their points under a pixel apart on screen merged."""
         now = self._view_key()
         for key, batch in self._batches.items():
-            if key[0] in ("lines", "tube") and getattr(batch, "view_key", now) != now \
+            if key[0] in SCREEN_THINNED and getattr(batch, "view_key", now) != now \
                     and getattr(batch, "objs", None):
                 self._draw(batch, key, batch.objs)
 
@@ -502,9 +508,15 @@ class Renderer:
 
     def object_bounds(self) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every drawn object, for autoscale."""
-        parts = [b for key, b in self._bounds.items()
-                 if self._batches[key].actor is not None and self._batches[key].actor.GetVisibility()]
+        parts = [b for key, b in self._bounds.items() if self._shown_or_due(self._batches[key])]
         return np.concatenate(parts) if parts else np.zeros((0, 2, 3))
+
+    @staticmethod
+    def _shown_or_due(batch) -> bool:
+        """Drawn and visible, or a curve to be drawn once the camera is placed."""
+        if getattr(batch, "view_key", None) == "to draw":
+            return True
+        return batch.actor is not None and batch.actor.GetVisibility()
 
     def _place_camera(self) -> None:
         cv = self.cv
@@ -560,7 +572,7 @@ class Renderer:
 
 def _tube(obj, view=None):
     """A curve of radius > 0 as a tube; with a ``view``, its points closer than
-    ``LINE_MIN_SEGMENT_PX`` on the screen merged (a long trail is thousands of them)."""
+    1.5 px on the screen merged (:mod:`.thinning`; a long trail is thousands of them)."""
     p, col, rad = obj._arrays()
     if len(p) < 2:
         return None
@@ -569,26 +581,6 @@ def _tube(obj, view=None):
     mesh = shapes.tube(p, rad)
     rgb = _rgb(col)[shapes.tube_vertex_points(len(p))]
     return mesh.points, mesh.normals, mesh.triangles, rgb
-
-
-def _thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):
-    """A polyline's points (positions, colours, radii) with those closer than ``min_px``
-    along it on the screen dropped: GL draws nothing of a segment much under a pixel,
-    so a curve of thousands of points would come out dotted or not at all."""
-    pos = chunk[0]
-    if len(pos) <= 2:
-        return chunk
-    pixels = view.project(pos)
-    seen = np.isfinite(pixels).all(axis=1)        # a point in the camera's plane: kept
-    seg = np.linalg.norm(np.diff(pixels, axis=0), axis=1)
-    seg = np.where(np.isfinite(seg), seg, min_px)
-    along = np.concatenate([[0.0], np.cumsum(seg)])
-    step = np.floor(along / min_px)
-    keep = np.concatenate([[True], step[1:] != step[:-1]]) | ~seen
-    keep[-1] = True
-    if keep.all():
-        return chunk
-    return tuple(a[keep] for a in chunk)
 
 
 def _quads_to_triangles(flat: np.ndarray) -> np.ndarray:

@@ -19,7 +19,7 @@ import math
 
 from . import runtime
 from .base import _Base
-from .checks import UNSUPPORTED, _vec, unsupported
+from .checks import _vec
 from .curves import curve, points
 from .vector import is_lenient, vector
 
@@ -79,9 +79,6 @@ class standard(_Base):
         self._oldaxis = None
         self._adjustupaxis = True
         self._pickable = True
-        for name in UNSUPPORTED:
-            if name in args:
-                raise unsupported(f"{self._kind}.{name} ({UNSUPPORTED[name]})")
         # VPython's order: plain vectors, then axis/size, then scalars, then linked scalars
         for name in ("pos", "up", "color"):
             if name in args:
@@ -395,11 +392,6 @@ class standard(_Base):
     opacity = _scalar("opacity")
     shininess = _scalar("shininess")
     emissive = _scalar("emissive", bool)
-
-    def __setattr__(self, name: str, value) -> None:
-        if name in UNSUPPORTED:
-            raise unsupported(f"{self._kind}.{name} ({UNSUPPORTED[name]})")
-        object.__setattr__(self, name, value)
 
     # -- motion --------------------------------------------------------------------------
 

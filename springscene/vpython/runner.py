@@ -186,7 +186,6 @@ class _Film:
         return shown[0] if shown else canvas.get_selected()
 
     def picture(self) -> np.ndarray:
-        attachments.update()              # attached arrows and trails follow at each render
         if self.shown is None:
             self.shown = self._choose_canvas()
         return self.renderer(self.shown).frame()
@@ -254,6 +253,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
         timeline.on_render = attachments.update
         ended = _execute(code, path, dialect, timeline, capture, limit, film)
+        attachments.update()      # the render after the program's last step
         try:
             if still:
                 write_png(tmp, film.picture())

@@ -1,0 +1,45 @@
+"""Curves drawn for the camera's view: GL draws nothing of a segment much under a pixel,
+so a thin line (or tube) of thousands of points is thinned on screen before drawing.
+
+:func:`thin_line` drops the points closer than ``LINE_MIN_SEGMENT_PX`` along the line
+on screen; :func:`curve_bounds` gives the curves' bounds from their points, for
+autoscale before they are drawn (the renderer draws them once the camera is placed).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+LINE_MIN_SEGMENT_PX = 1.5  # px: shorter segments of a thin line are merged
+
+
+def curve_bounds(objs, kind: str) -> np.ndarray:
+    """Bounds (n, 2, 3) of curves from their points (a tube's widened by its radius), for
+    autoscale before they are drawn."""
+    found = []
+    for o in objs:
+        p, _, rad = o._arrays()
+        if len(p) >= 2:
+            pad = float(rad.max()) if kind == "tube" else 0.0
+            found.append([p.min(axis=0) - pad, p.max(axis=0) + pad])
+    return np.array(found) if found else np.zeros((0, 2, 3))
+
+
+def thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):
+    """A polyline's points (positions, colours, radii) with those closer than ``min_px``
+    along it on the screen dropped: GL draws nothing of a segment much under a pixel,
+    so a curve of thousands of points would come out dotted or not at all."""
+    pos = chunk[0]
+    if len(pos) <= 2:
+        return chunk
+    pixels = view.project(pos)
+    seen = np.isfinite(pixels).all(axis=1)        # a point in the camera's plane: kept
+    seg = np.linalg.norm(np.diff(pixels, axis=0), axis=1)
+    seg = np.where(np.isfinite(seg), seg, min_px)
+    along = np.concatenate([[0.0], np.cumsum(seg)])
+    step = np.floor(along / min_px)
+    keep = np.concatenate([[True], step[1:] != step[:-1]]) | ~seen
+    keep[-1] = True
+    if keep.all():
+        return chunk
+    return tuple(a[keep] for a in chunk)
