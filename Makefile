@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render figures matter test lint bench baselines clean system-deps
+.PHONY: setup render figures matter test lint bench baselines clean system-deps fidelity
 
 $(STAMP): pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -66,6 +66,30 @@ bench: setup
 
 baselines: setup
 	$(BIN)/python -m pytest tests/view tests/figures tests/vpython --regen-baselines
+
+# springscene against real VPython (docs/fidelity.md): real VPython 7 draws in headless
+# Chromium (Debian's chromium and chromium-driver, installed when missing and apt-get can run
+# as root) from a separate venv; its pictures are kept in tests/baselines/fidelity/ and taken
+# again only with FIDELITY_ARGS=--update-reference
+FIDELITY_VENV := .fidelity-venv
+FIDELITY_ARGS ?=
+$(FIDELITY_VENV)/.installed:
+	$(PYTHON) -m venv $(FIDELITY_VENV)
+	$(FIDELITY_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(FIDELITY_VENV)/bin/python -m pip install --quiet vpython==7.6.5 selenium==4.51.0 \
+	  numpy==2.4.6 pillow==13.0.0
+	touch $@
+
+fidelity: setup $(FIDELITY_VENV)/.installed
+	@if ! command -v chromium >/dev/null || [ ! -x /usr/bin/chromedriver ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing chromium and chromium-driver"; \
+	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	      chromium chromium-driver >/dev/null; \
+	  else echo "chromium and chromium-driver are missing: real VPython can only be read" \
+	    "from tests/baselines/fidelity/"; fi; \
+	fi
+	$(BIN)/python benchmarks/fidelity/run.py --python $(FIDELITY_VENV)/bin/python $(FIDELITY_ARGS)
 
 clean:
 	rm -rf $(VENV) build *.egg-info renders/wiki/oscillation.mp4 renders/wiki/still.png

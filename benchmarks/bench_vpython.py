@@ -10,12 +10,20 @@
      pixels across).
 2. The wiki program: ``springscene vpython examples/wiki_spring.py`` against
    ``springscene render configs/wiki.toml`` of the same scene, 3 s of MP4 each.
+3. VPython's own demos (vpython-jupyter ``Demos_no_notebook``: AtomicSolid at
+   900 x 600, HardSphereGas, Stars, RotatingBoxes at their own canvas sizes), run
+   as programs to MP4, draft and anti-aliased: steady frames/s with springscene's
+   level of detail (helices, spheres) and back-face culling against full detail
+   (VPython's 60 x 16 helices, 30 x 30 spheres, both sides drawn) in the same run
+   (helices batched in both). The demos are read from the folder
+   ``$SPRINGSCENE_DEMOS`` (default /work/demos); missing ones are skipped.
 
 Rounds are interleaved and the best of each is kept.
 """
 
 from __future__ import annotations
 
+import os
 import sys
 import tempfile
 import time
@@ -111,6 +119,61 @@ def wiki_render(out: Path) -> float:
     return time.perf_counter() - start
 
 
+DEMOS = (("AtomicSolid", (900, 600)), ("HardSphereGas", None), ("Stars", None),
+         ("RotatingBoxes", None))
+DEMO_FRAMES = 9          # the first 3 (set-up) are not timed
+DEMO_ROUNDS = 2
+
+
+def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> float:
+    """Steady frames/s of a demo run to MP4 (frames 3 on), with or without level of detail."""
+    import random
+
+    from springscene.vpython import draw, helix_batch
+
+    src = program.read_text()
+    if size is not None:
+        src = src.replace("from vpython import *", "from vpython import *\n"
+                          f"scene.width = {size[0]}; scene.height = {size[1]}", 1)
+    prog = tmp / program.name
+    prog.write_text(src)
+    saved = helix_batch.LOD_PX, draw.SPHERE_LOD, helix_batch.cull_back_faces
+    if not lod:
+        helix_batch.LOD_PX, draw.SPHERE_LOD = 0.0, ((30, 0.0),)
+        helix_batch.cull_back_faces = lambda *args: None
+    times: list[float] = []
+    random.seed(1)
+    try:
+        run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
+                    page=False, on_frame=lambda i, image: times.append(time.perf_counter()))
+    finally:
+        helix_batch.LOD_PX, draw.SPHERE_LOD, helix_batch.cull_back_faces = saved
+    steady = times[3:]
+    return (len(steady) - 1) / (steady[-1] - steady[0])
+
+
+def demos(tmp: Path) -> None:
+    folder = Path(os.environ.get("SPRINGSCENE_DEMOS", "/work/demos"))
+    found = [(name, size) for name, size in DEMOS if (folder / f"{name}.py").is_file()]
+    if not found:
+        print(f"VPython demos: none in {folder} (set SPRINGSCENE_DEMOS); skipped")
+        return
+    print(f"VPython demos to MP4, steady frames/s (best of {DEMO_ROUNDS}), "
+          "level of detail against full detail:")
+    for name, size in found:
+        best = {}
+        for _ in range(DEMO_ROUNDS):
+            for aa in (False, True):
+                for lod in (False, True):
+                    fps = demo_fps(folder / f"{name}.py", size, aa, lod, tmp)
+                    best[aa, lod] = max(best.get((aa, lod), 0.0), fps)
+        where = f" at {size[0]} x {size[1]}" if size else ""
+        print(f"  {name}{where}:")
+        for aa in (False, True):
+            print(f"    {'anti-aliased' if aa else 'draft':<13} {best[aa, True]:6.1f} frames/s "
+                  f"(full detail {best[aa, False]:5.1f}, {best[aa, True] / best[aa, False]:.2f}x)")
+
+
 def main() -> None:
     from springscene.view import backend
 
@@ -134,6 +197,8 @@ def main() -> None:
     print(f"  springscene render           {frames / best['render']:6.1f} frames/s")
     print(f"  springscene vpython program  {frames / best['vpython']:6.1f} frames/s "
           f"({best['render'] / best['vpython']:.2f}x render's speed)")
+    with tempfile.TemporaryDirectory() as tmp:
+        demos(Path(tmp))
 
 
 if __name__ == "__main__":

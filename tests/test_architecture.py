@@ -21,7 +21,8 @@ PACKAGE = ROOT / "springscene"
 BIN = Path(sys.executable).parent
 MAX_MODULE_LINES = 600
 MAX_FUNCTION_LINES = 60
-HEAVY = ("vtkmodules", "pyvista", "matplotlib", "cycler", "imageio", "imageio_ffmpeg", "PIL", "tqdm")
+HEAVY = ("vtkmodules", "pyvista", "matplotlib", "cycler", "imageio", "imageio_ffmpeg", "PIL", "tqdm",
+         "skimage")
 
 
 def _modules() -> list[Path]:

@@ -117,8 +117,11 @@ def _add_vpython_command(sub) -> None:
     length.add_argument("--frames", type=int, help="frames to film")
     s.add_argument("--fps", type=int, default=50, help="frames per program second (default 50)")
     s.add_argument("--overlay", default="", metavar="LIST",
-                   help="graph: the program's graphs under the scene")
-    s.add_argument("--no-page", action="store_true", help="write no page.html")
+                   help="graph: the program's graphs under the canvas (with --canvas-only)")
+    s.add_argument("--canvas-only", action="store_true",
+                   help="the first canvas alone at its own size (what scene.capture saves), "
+                   "not the page (title, canvases, captions, graphs)")
+    s.add_argument("--no-page", action="store_true", help="write no OUT.html page")
     s.add_argument("--quiet", action="store_true", help="no summary line")
     _renders(s)
 
@@ -189,6 +192,7 @@ def _vpython(args: argparse.Namespace) -> int:
     result = jobs.vpython(args.program, args.out, duration=args.duration, frames=args.frames,
                           fps=args.fps, backend=args.backend, antialias=not args.draft,
                           overlays=overlays, page=not args.no_page,
+                          canvas_only=args.canvas_only,
                           on_dialect=lambda d: print(f"springscene: {args.program}: "
                                                      f"written for {d.name}", file=sys.stderr))
     for note in result.notes:

@@ -13,6 +13,10 @@ moved since the last point.
 - ``attach_arrow(obj, "attr", scale=1, color=obj.color, shaftwidth=0.5 × size.y,
   ...)``: an ``arrow``, with ``stop()`` and ``start()``;
 - ``attach_light(obj, offset=, color=)``: a ``local_light`` kept at ``obj.pos + offset``.
+
+As in VPython 7 (vpython.py: ``attach_trail`` is a ``standardAttributes`` object, and
+``canvas.objects`` lists the visible Python objects), ``scene.objects`` lists an
+``attach_trail`` itself, not the curves it draws (they are marked ``_unlisted``).
 """
 
 from __future__ import annotations
@@ -56,6 +60,8 @@ class attach_trail:
         self._run = True
         self._pieces: list = []
         self._new_piece()
+        self.visible = True
+        self.canvas._list_only(self)     # in scene.objects as itself, not its curves
         _trails.append(self)
 
     def _new_piece(self) -> None:
@@ -64,6 +70,7 @@ class attach_trail:
         if self.type == "points":
             options["size_units"] = "world"
         self._trail = (curve if self.type == "curve" else points)(**options)
+        self._trail._unlisted = True
         self._pieces.append(self._trail)
 
     def _position(self):
@@ -99,6 +106,15 @@ class attach_trail:
         self._last = None
         for piece in self._pieces:
             piece.clear()
+
+    def delete(self) -> None:
+        """Stop, remove the trail's curves from the picture and the trail from the list."""
+        self._run = False
+        for piece in self._pieces:
+            piece.delete()
+        self.canvas._remove(self)
+        if self in _trails:
+            _trails.remove(self)
 
 
 def attach_arrow(obj, attr: str, scale: float = 1.0, **options: Any) -> arrow:

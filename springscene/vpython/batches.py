@@ -11,7 +11,8 @@ VTK textures once per renderer (:class:`TextureCache`).
 VTK multiplies a texture by the per-point RGB colours (checked: a white-to-red
 quad under a green-and-yellow texture draws green and red), which is GlowScript's
 rule, ``diffuse_color = vcolor * texture(texmap, mat_pos)``
-(opaque_render_fragment.shader).
+(opaque_render_fragment.shader); it multiplies after lighting, GlowScript before the
+specular is added: :mod:`.texture_shading` makes a textured batch GlowScript's.
 """
 
 from __future__ import annotations
@@ -19,7 +20,10 @@ from __future__ import annotations
 import numpy as np
 
 from ..view.scene import SPECULAR
+from .materials import shade_as_glowscript, shade_emissive
 from .placement import vtk_cells
+from . import textures
+from .texture_shading import BUMP_SAMPLER, bump_frame, shade_textured
 
 LINE_WIDTH = 2            # px: a curve of radius 0 (VPython draws a thin line)
 
@@ -28,6 +32,9 @@ class Batch:
     """One actor and mesh holding every object of one kind and look."""
 
     empty = False        # nothing to draw (a cleared curve, a zero-length helix)
+    opacity = 1.0        # the look's opacity
+    vertex_alpha = False  # some vertex's own opacity (RGBA colours) is below 1
+    lit = False          # a surface lit by the lights (shaded by GlowScript's rules)
 
     def __init__(self, plotter, key: tuple, mode: str, texture=None) -> None:
         import pyvista as pv  # noqa: PLC0415  heavy: pyvista
@@ -43,6 +50,11 @@ class Batch:
     def set(self, points, normals, colors, cells, signature, style, uv=None) -> None:
         """New geometry: in place when the topology (``signature``) is unchanged."""
         self.empty = False
+        alpha = colors.ndim == 2 and colors.shape[1] == 4 and bool((colors[:, 3] < 255).any())
+        if alpha != self.vertex_alpha:
+            self.vertex_alpha = alpha
+            if self.actor is not None:
+                self._shade()
         if signature == self.signature and self.actor is not None:
             self._update(points, normals, colors, uv)
             return
@@ -94,7 +106,13 @@ class Batch:
         prop.SetSpecularColor(1.0, 1.0, 1.0)
         prop.SetSpecularPower(max(100 * shininess, 1.0))
         prop.SetOpacity(style["opacity"])
-        if style["emissive"]:
+        self.opacity = style["opacity"]
+        self.lit = self.mode == "triangles" and not style["emissive"]
+        prop.LightingOn()                  # on again after an emissive curve or points
+        self._shade()
+        if style["emissive"] and self.mode == "triangles":
+            shade_emissive(self.actor)     # GlowScript's glow, dimmed towards the outline
+        elif style["emissive"]:
             prop.LightingOff()
         if self.mode == "lines":
             prop.SetLineWidth(LINE_WIDTH)
@@ -102,6 +120,15 @@ class Batch:
         if self.mode == "points":
             prop.SetPointSize(style["point_px"])
             prop.LightingOff()
+
+    @property
+    def translucent(self) -> bool:
+        """Drawn in GlowScript's transparent layers: its opacity or a vertex's is below 1."""
+        return self.opacity < 1 or self.vertex_alpha
+
+    def _shade(self) -> None:
+        if self.lit:
+            shade_as_glowscript(self.actor, self.translucent)
 
     def hide(self) -> None:
         self.empty = True
@@ -129,6 +156,18 @@ class TexturedBatch(Batch):
     def __init__(self, plotter, key: tuple, texture) -> None:
         super().__init__(plotter, key, "triangles", texture)
         self.bare = Batch(plotter, key, "triangles")
+        spec = key[-1]                     # the batch's TextureSpec (draw.Renderer._key)
+        bump = textures.bump_of(spec) if isinstance(spec, textures.TextureSpec) else None
+        self.bump = None if bump is None else vtk_texture(bump)
+        self.frame = None if bump is None else bump_frame(spec.flipx, spec.flipy, spec.turn)
+
+    def _shade(self) -> None:
+        if not self.lit:
+            return
+        if self.bump is not None and self.actor.GetProperty().GetTexture(BUMP_SAMPLER) is None:
+            self.actor.GetProperty().SetTexture(BUMP_SAMPLER, self.bump)
+        # the texel colours diffuse and ambient, not specular; a bump map bends the normals
+        shade_textured(self.actor, self.translucent, self.frame)
 
     def set_parts(self, points, normals, colors, uv, triangles, covered, signature,
                   style) -> None:
@@ -172,14 +211,20 @@ class TextureCache:
     def get(self, source: str, image: np.ndarray):
         texture = self._textures.get(source)
         if texture is None:
-            import pyvista as pv  # noqa: PLC0415  heavy: pyvista
-
-            texture = pv.Texture(np.ascontiguousarray(image))   # row 0 at v = 1, as WebGL's flip
-            texture.SetInterpolate(True)
-            texture.SetMipmap(True)
-            texture.SetRepeat(True)                              # WebGL's default wrap
-            self._textures[source] = texture
+            texture = self._textures[source] = vtk_texture(image)
         return texture
 
 
-__all__ = ["Batch", "TexturedBatch", "TextureCache", "LINE_WIDTH"]
+def vtk_texture(image: np.ndarray):
+    """A VTK texture of an RGB picture: row 0 at v = 1 (WebGL's ``UNPACK_FLIP_Y_WEBGL``),
+    repeated (WebGL's default wrap), with mipmaps (GlowScript's ``generateMipmap``)."""
+    import pyvista as pv  # noqa: PLC0415  heavy: pyvista
+
+    texture = pv.Texture(np.ascontiguousarray(image))
+    texture.SetInterpolate(True)
+    texture.SetMipmap(True)
+    texture.SetRepeat(True)
+    return texture
+
+
+__all__ = ["Batch", "TexturedBatch", "TextureCache", "vtk_texture", "LINE_WIDTH"]

@@ -23,6 +23,7 @@ import math
 from ..view.scene import LIGHTS
 from . import runtime, widgets
 from .checks import _vec
+from .page_frame import claim_slot
 from .vector import is_lenient, vector
 
 
@@ -201,6 +202,7 @@ class canvas:
 
     def __init__(self, **args) -> None:
         self._objects: list = []
+        self._listed: list = []             # listed in ``objects`` but not drawn themselves
         self.lights: list = []
         self._title = ""
         self._caption = ""
@@ -253,15 +255,27 @@ class canvas:
 
     def _add(self, obj) -> None:
         self._objects.append(obj)
+        claim_slot(self)          # VPython shows a canvas on the page at its first object
 
     def _remove(self, obj) -> None:
         if obj in self._objects:
             self._objects.remove(obj)
+        if obj in self._listed:
+            self._listed.remove(obj)
+
+    def _list_only(self, obj) -> None:
+        """List ``obj`` in ``objects`` though it draws nothing itself (an ``attach_trail``)."""
+        self._listed.append(obj)
 
     @property
     def objects(self) -> list:
-        """The visible objects, as VPython's ``scene.objects``."""
-        return [o for o in self._objects if o.visible]
+        """The visible objects, as VPython 7's ``scene.objects`` (``canvas.objects`` in
+        vpython.py: the visible Python objects made on this canvas). A ``make_trail``
+        trail is drawn in the browser and is no Python object there, so it is not listed
+        (its curve here is marked ``_unlisted``); an ``attach_trail`` is listed itself,
+        not the curves it draws."""
+        drawn = [o for o in self._objects if o.visible and not getattr(o, "_unlisted", False)]
+        return drawn + [o for o in self._listed if o.visible]
 
     def delete(self) -> None:
         self._visible = False

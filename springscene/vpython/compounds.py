@@ -62,6 +62,16 @@ class fused(standard):
 
     _kind = "compound"
     _axis_sets_size = False
+    # The shininess each vertex of the surface carries. GlowScript draws a compound with
+    # ``objectShininess * shininess`` (glow.min.js ``render_vertex``: parameters.x), the
+    # second being the merged mesh's per-vertex value: a ``vertex`` object's (default 0.6,
+    # as extrusion and 3D text are built of vertex objects), or a part's own shininess.
+    _part_shininess = 0.6
+
+    @property
+    def _drawn_shininess(self) -> float:
+        """The shininess the renderer lights this object with."""
+        return float(self._shininess) * float(self._part_shininess)
 
     def _take(self, surface: Surface, origin, size0) -> None:
         origin, size0 = np.asarray(origin, dtype=float), np.asarray(size0, dtype=float)
@@ -121,6 +131,7 @@ class fused(standard):
         for name in ("_pos", "_axis", "_up", "_size", "_color"):
             new.__dict__[name] = vector(self.__dict__[name])
         new._trail = None
+        new.__dict__.pop("_stopped_trails", None)     # the original's stopped trails
         new._hook()
         new._register({"canvas": self._canvas})
         for name, value in args.items():
@@ -154,6 +165,19 @@ class fused(standard):
         return X, Z.cross(X).norm(), Z
 
 
+def _parts_shininess(objs: list, counts: list) -> float:
+    """The per-vertex shininess of a merged mesh, as one number: the parts' (Mesh.merge:
+    ``object.shininess * mesh.shininess``, a primitive's mesh having 1, a compound's its own
+    product, a triangle's its vertices'). Parts that differ: the value most vertices carry."""
+    weight: dict[float, int] = {}
+    for obj, n in zip(objs, counts):
+        verts = getattr(obj, "_verts", None)
+        value = (np.mean([v._shininess for v in verts]) if verts
+                 else getattr(obj, "_drawn_shininess", obj._shininess))
+        weight[float(value)] = weight.get(float(value), 0) + n
+    return max(weight, key=weight.get) if weight else 0.6
+
+
 class compound(fused):
     """Objects fused into one, moved and turned as one (VPython's ``compound``).
 
@@ -173,6 +197,7 @@ class compound(fused):
                     in self._INELIGIBLE:
                 raise TypeError(f"A {type(obj).__name__} object cannot be used in a compound")
         parts = [object_mesh(o, uv=True) for o in objs]     # texpos kept, as mesh.js merges
+        self._part_shininess = _parts_shininess(objs, [len(p[0]) for p in parts])
         surface = Surface.join([Surface(p[0], p[1], p[2], p[3].astype(float) / 255)
                                 for p in parts])
         uv = np.concatenate([p[4] for p in parts])

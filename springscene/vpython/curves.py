@@ -4,8 +4,9 @@ As in ``vpython/vpython.py`` (``curveMethods``): points come as vectors, lists o
 vectors or dictionaries ``{"pos": v, "color": c, "radius": r}``; ``append``,
 ``modify``, ``point``, ``slice``, ``splice``, ``pop``, ``shift``, ``unshift``,
 ``clear`` and ``npoints`` work on the list. ``retain`` keeps only the newest points
-(trails use it). A curve of radius 0 is a thin line; ``points`` are round dots of
-``radius`` pixels (or world units with ``size_units="world"``).
+(trails use it). A curve of radius 0 is a thin lit tube whose width follows the range;
+``points`` are lit balls of ``radius`` pixels (or world units with ``size_units="world"``),
+both as :mod:`.point_draw` draws them.
 """
 
 from __future__ import annotations
@@ -56,6 +57,10 @@ def _flatten(args: tuple) -> list:
 class _PointList(_Base):
     _kind = "curve"
     _default_radius = 0.0
+    # for autoscale (:mod:`.autoscale`): points appended so far, and a count of the other
+    # changes; while only appends happen, only the new points need measuring
+    _appended = 0
+    _version = 0
 
     def __init__(self, *args, **kwargs) -> None:
         object.__setattr__(self, "_constructing", True)
@@ -117,12 +122,12 @@ class _PointList(_Base):
         object.__setattr__(self, attr, value)
         if isinstance(value, vector):
             value._on_change = self._touch
-        self._cache = None
-        self._dirty = True
+        self._touch()
 
     def _touch(self) -> None:
         self._cache = None
         self._dirty = True
+        self._version += 1
 
     @property
     def pos(self):
@@ -161,16 +166,17 @@ class _PointList(_Base):
 
     def _changed(self) -> None:
         """A change other than an append: the arrays are made anew."""
-        self._cache = None
-        self._dirty = True
+        self._touch()
 
     def append(self, *args, **kwargs) -> None:
-        self._pts.extend(self._parse(args, kwargs))
+        new = self._parse(args, kwargs)
+        self._pts.extend(new)
+        self._appended += len(new)
         self._trim()
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
-        self._cache = None
+        self._touch()
         self._trim()
 
     def _check_index(self, n: int) -> None:
@@ -321,7 +327,8 @@ class curve(_PointList):
 
 
 class points(_PointList):
-    """Round dots; ``radius`` in pixels unless ``size_units="world"`` (default 2.5 px)."""
+    """Round dots, drawn as lit balls (:mod:`.point_draw`): ``radius`` in VPython's
+    pixels unless ``size_units="world"``; radius 0 is 20 of those pixels across."""
 
     _kind = "points"
     _default_radius = 0.0

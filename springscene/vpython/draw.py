@@ -4,16 +4,17 @@ A frame costs one geometry update per batch, not one VTK call per object: every
 visible object of a kind (and opacity, shininess, emissive) is placed with one
 numpy pass (:func:`springscene.vpython.placement.place`) into one mesh whose points,
 normals and colours are rewritten in place. A batch none of whose objects changed
-is not touched. Labels are the exception: each is a text actor.
+is not touched. Labels are drawn over the grabbed frame (:mod:`.label_draw`).
 
 Textured objects are batched per texture (VTK keeps one texture per actor) and
 drawn from GlowScript's textured meshes (:mod:`.textured`, :mod:`.batches`);
 triangles and quads (:mod:`.polygons`) are a kind of their own, coloured,
 lit and textured per vertex.
 
-Lights, camera, autoscale, shading and the title are those of
+Lights, camera, autoscale and shading are those of
 :class:`springscene.scene.Scene`, so a VPython program of the wiki scene draws
-what ``springscene render`` draws.
+what ``springscene render`` draws. The title and caption are the page's, around the
+canvas (:mod:`.page_frame`), not in it.
 """
 
 from __future__ import annotations
@@ -26,11 +27,11 @@ from collections import defaultdict
 import numpy as np
 
 from ..view import backend, camera
-from ..view.geometry import HelixTube
-from ..view.scene import MULTI_SAMPLES, TITLE_FONT_SIZE, apply_view, grab, title_color
-from . import frames, placement, polygons, shapes, textured, textures
+from ..view.scene import MULTI_SAMPLES, apply_view, grab
+from . import (autoscale, frames, label_draw, materials, placement, point_draw, polygons, shapes,
+               textured, textures)
+from . import helix_batch
 from .thinning import curve_bounds as _curve_bounds
-from .thinning import thin_line as _thin_line
 from .batches import Batch, TextureCache, TexturedBatch
 
 # kinds drawn from one template scaled by size: (template, anchored at one end)
@@ -39,8 +40,7 @@ TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
              "pyramid": (shapes.pyramid, True)}
 # level of detail: (slices, smallest on-screen radius in px that gets them)
 SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
-POINT_RADIUS = 2.5        # px: points of radius 0
-SCREEN_THINNED = ("lines", "tube")   # kinds drawn for the camera's view (thinned on screen)
+SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
 _TAGS = re.compile(r"<[^>]*>")
 
 
@@ -61,8 +61,6 @@ _frames = placement.object_frames   # pos, rotation, size and colour arrays of o
 
 
 _TEMPLATES: dict = {}
-_TUBES: dict[tuple, HelixTube] = {}
-MAX_CACHED_TUBES = 256
 
 
 def template(kind: str, slices: int | None = None) -> placement.Mesh:
@@ -162,22 +160,9 @@ def _mesh(kind: str, obj):
                                                       len(points), axis=0)
 
 def _helix(obj):
-    radius = obj._size.y / 2
-    thickness = obj._thickness if obj._thickness is not None else 0.0
-    key = (radius, thickness, float(obj._coils), bool(obj._ccw))
-    tube = _TUBES.get(key)
-    if tube is None:
-        if len(_TUBES) > MAX_CACHED_TUBES:       # an animated radius or coils
-            _TUBES.clear()
-        tube = _TUBES[key] = HelixTube(radius, thickness, obj._coils, obj._ccw)
-        tube.triangles = _quads_to_triangles(tube.faces())
-    axis = np.array(obj._axis._xyz())
-    R = placement.frames(axis[None], np.array([obj._up._xyz()]))[0]
-    if not np.linalg.norm(axis) > 0:
-        return None
-    points, normals = tube.points(obj._pos._xyz(), axis, R)
-    return points, normals, tube.triangles, np.repeat(_rgb([obj._color._xyz()]),
-                                                      len(points), axis=0)
+    """One helix at VPython's full detail (:mod:`.helix_batch`)."""
+    m = helix_batch.mesh([obj])
+    return None if m is None else m[:4]
 
 
 class Renderer:
@@ -200,17 +185,14 @@ class Renderer:
         self.cv = cv
         self.width, self.height = int(cv.width), int(cv.height)
         pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
-        pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
         pl.renderer.AutomaticLightCreationOff()     # scene.lights = [] means no light
+        self._transparency = materials.Transparency(pl, MULTI_SAMPLES if antialias else 0)
         self.plotter = pl
         self._ambient = None
         self._batches: dict[tuple, _Batch] = {}
-        self._labels: dict[int, object] = {}
+        self._label_specs: list = []
         self._lights_sig = None
-        self._title = None
-        self._title_text = None
         self._background = None
-        self._autoscale = camera.Autoscaler()
         self._bounds: dict[tuple, np.ndarray] = {}
         self._textures = TextureCache()
         self.view: camera.View | None = None
@@ -224,10 +206,11 @@ class Renderer:
         if self._pixels is None:
             from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: vtk
             self._pixels = vtkUnsignedCharArray()
-        return grab(self.plotter.ren_win, self.width, self.height, self._pixels)
+        image = grab(self.plotter.ren_win, self.width, self.height, self._pixels)
+        return label_draw.composite(image, self._label_specs)
 
     def sync(self) -> None:
-        """Rewrite every batch whose objects changed, then the lights, title and camera
+        """Rewrite every batch whose objects changed, then the lights and camera
         (objects in VPython 6 frames placed in the world for the drawing)."""
         with frames.in_world(self.cv._objects):
             self._sync()
@@ -271,9 +254,9 @@ class Renderer:
                 for key, batch in self._batches.items():
                     batch.restyle(self._style(key))
             self._ambient = ambient
+        self._transparency.sync(self._batches.values())   # GlowScript's depth peeling
         self._sync_background()
         self._sync_lights()
-        self._sync_title()
         self._place_camera()
         self._thin_for_this_view()
         self._sync_labels(labels)
@@ -285,7 +268,8 @@ class Renderer:
             return self._point_key(obj)
         if kind == "triangle":
             return ("triangle", *polygons.look(obj), self._texture_spec(obj._texture))
-        key = (kind, float(obj._opacity), float(obj._shininess), bool(obj._emissive))
+        key = (kind, float(obj._opacity), float(getattr(obj, "_drawn_shininess", obj._shininess)),
+               bool(obj._emissive))
         spec = textured.spec_for(obj)
         if spec is not None and textures.load(spec) is not None:
             return ("textured", *key, spec)
@@ -305,33 +289,24 @@ class Renderer:
 
     @staticmethod
     def _point_key(obj) -> tuple:
+        look = (float(obj._shininess), bool(obj._emissive))
         if obj._kind == "points":
-            if obj._size_units == "world":
-                return ("sphere-points", float(obj._shininess), bool(obj._emissive))
-            r = obj._radius if obj._radius > 0 else POINT_RADIUS
-            return ("points", float(r))
-        if obj._radius > 0:
-            return ("tube", float(obj._shininess), bool(obj._emissive))
-        return ("lines",)
+            return ("sphere-points" if obj._size_units == "world" else "points", *look)
+        return ("tube" if obj._radius > 0 else "lines", *look)
 
     @staticmethod
     def _mode(key: tuple) -> str:
-        return {"lines": "lines", "points": "points"}.get(key[0], "triangles")
+        return "triangles"        # points and thin curves too: spheres and tubes
 
     def _style(self, key: tuple) -> dict:
         ambient = float(np.mean(self.cv.ambient.value))
-        style = {"ambient": ambient, "opacity": 1.0, "shininess": 0.6, "emissive": False,
-                 "point_px": 2 * POINT_RADIUS}
+        style = {"ambient": ambient, "opacity": 1.0, "shininess": 0.6, "emissive": False}
         if key[0] in TEMPLATES or key[0] in ("arrow", "helix", "ring", "compound"):
             style.update(opacity=key[1], shininess=key[2], emissive=key[3])
-        elif key[0] in ("tube", "sphere-points"):
-            style.update(shininess=key[1], emissive=key[2])
-        elif key[0] == "points":
-            style["point_px"] = 2 * key[1]
+        elif key[0] in ("tube", "sphere-points", "lines", "points", "triangle"):
+            style.update(shininess=key[1], emissive=key[2])   # a triangle's opacity: RGBA
         elif key[0] == "textured":
             style.update(opacity=key[2], shininess=key[3], emissive=key[4])
-        elif key[0] == "triangle":             # opacity is each vertex's (RGBA)
-            style.update(shininess=key[1], emissive=key[2])
         return style
 
     # -- geometry per kind ---------------------------------------------------------------
@@ -341,7 +316,7 @@ class Renderer:
         style = self._style(key)
         if kind in TEMPLATES:
             self._draw_templates(batch, key, objs, style)
-        elif kind in ("lines", "points"):
+        elif kind in ("lines", "points", "tube", "sphere-points"):
             self._draw_points(batch, key, objs, style)
         elif kind == "textured":
             a = textured.arrays(key[1], objs, key[-1])
@@ -350,10 +325,8 @@ class Renderer:
             self._bounds[key] = a["bounds"]
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
-        elif kind == "tube":                # points under a pixel apart merged
-            batch.view_key = self._view_key()
-            meshes = [m for m in (_tube(o, self.view) for o in objs) if m is not None]
-            self._draw_meshes(batch, key, meshes, style)
+        elif kind == "helix":             # one vectorised mesh, detail by screen size
+            self._bounds[key] = helix_batch.draw(batch, objs, self.view, style)
         else:
             meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
@@ -370,6 +343,8 @@ class Renderer:
         cells = None if signature == batch.signature else \
             placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
         batch.set(points, normals, colors, cells, signature, style)
+        if key[0] == "sphere":
+            helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
         # bounds: the object's oriented box
         half = np.abs(R) @ (size[:, :, None] / 2)
         centre = pos + (R[:, :, 0] * size[:, :1] / 2 if anchored else 0)
@@ -419,30 +394,13 @@ class Renderer:
         self._bounds[key] = np.array([[m[0].min(axis=0), m[0].max(axis=0)] for m in meshes])
 
     def _draw_points(self, batch, key, objs, style) -> None:
-        chunks = [o._arrays() for o in objs]
-        chunks = [c for c in chunks if len(c[0]) >= (2 if key[0] == "lines" else 1)]
-        if not chunks:
-            batch.hide()
-            self._bounds.pop(key, None)
-            return
-        self._bounds[key] = np.array([[c[0].min(axis=0), c[0].max(axis=0)] for c in chunks])
-        if key[0] == "lines":       # sub-pixel segments do not rasterise: thin them out
+        """Points as spheres and curves as tubes (:mod:`.point_draw`); pixel-sized points and
+        thin curves sized by the range, curves thinned on screen for this view."""
+        if key[0] in SCREEN_THINNED:
             batch.view_key = self._view_key()
-            if self.view is not None:
-                chunks = [_thin_line(c, self.view) for c in chunks]
-        points = np.concatenate([c[0] for c in chunks])
-        colors = _rgb(np.concatenate([c[1] for c in chunks]))
-        signature = tuple(len(c[0]) for c in chunks)
-        cells = None
-        if signature != batch.signature:
-            if key[0] == "lines":
-                parts, start = [], 0
-                for c in chunks:
-                    n = len(c[0])
-                    parts.append(np.concatenate([[n], np.arange(start, start + n)]))
-                    start += n
-                cells = np.concatenate(parts)
-        batch.set(points, None, colors, cells, signature, style)
+        rng, w = self.cv._range_now(), self.width
+        meshes = [point_draw.mesh(key[0], o, self.view, rng, w) for o in objs]
+        self._draw_meshes(batch, key, [m for m in meshes if m is not None], style)
 
     def _view_key(self):
         v = self.view
@@ -492,42 +450,14 @@ class Renderer:
             self.plotter.add_light(dark)
         self._lights_sig = sig
 
-    def _sync_title(self) -> None:
-        text = plain_text(self.cv.title)
-        colour = title_color(self.cv.background.value)
-        if (text, colour) == self._title_text:
-            return
-        if self._title is not None:
-            self.plotter.remove_actor(self._title)
-            self._title = None
-        if text:
-            self._title = self.plotter.add_text(
-                text, position="upper_edge", font_size=TITLE_FONT_SIZE,
-                color=colour, name="title")
-        self._title_text = (text, colour)
-
-    def object_bounds(self) -> np.ndarray:
-        """Axis-aligned bounds (n, 2, 3) of every drawn object, for autoscale."""
-        parts = [b for key, b in self._bounds.items() if self._shown_or_due(self._batches[key])]
-        return np.concatenate(parts) if parts else np.zeros((0, 2, 3))
-
-    @staticmethod
-    def _shown_or_due(batch) -> bool:
-        """Drawn and visible, or a curve to be drawn once the camera is placed."""
-        if getattr(batch, "view_key", None) == "to draw":
-            return True
-        return batch.actor is not None and batch.actor.GetVisibility()
-
     def _place_camera(self) -> None:
         cv = self.cv
         w, h = self.width, self.height
         if cv._follow is not None:
             cv._center = cv._follow.pos
         center = np.array(cv.center.value)
-        if cv.autoscale:
-            bounds = self.object_bounds()
-            if len(bounds):
-                cv._autoscaled_range = self._autoscale.update(bounds, center, cv.fov, w, h)
+        if cv.autoscale:      # VPython's rule, at every render (:mod:`.autoscale`)
+            autoscale.update(cv)
         rng = cv._range_now()
         v = camera.view(center, np.array(cv.forward.value), np.array(cv.up.value), cv.fov,
                         rng, w, h)
@@ -535,56 +465,15 @@ class Renderer:
         self.view = v
 
     def _sync_labels(self, labels: list) -> None:
-        from vtkmodules.vtkRenderingCore import vtkTextActor  # noqa: PLC0415  heavy: vtk
-
-        seen = set()
-        for lab in labels:
-            actor = self._labels.get(id(lab))
-            if actor is None:
-                actor = self._labels[id(lab)] = vtkTextActor()
-                self.plotter.renderer.AddViewProp(actor)
-            seen.add(id(lab))
-            if lab.pixel_pos:
-                col, row = lab.pos.x, lab.pos.y
-            else:
-                col, row = self.view.project(np.array(lab.pos.value))
-                row = self.height - row
-            actor.SetInput(plain_text(lab.text))
-            actor.SetPosition(col + lab.xoffset, row + lab.yoffset)
-            prop = actor.GetTextProperty()
-            prop.SetFontSize(int(round(lab.height)))
-            prop.SetColor(*lab.color.value)
-            prop.SetFontFamilyToArial()
-            prop.SetJustificationToCentered()
-            prop.SetVerticalJustificationToCentered()
-            prop.SetBackgroundColor(*lab.background.value)
-            prop.SetBackgroundOpacity(lab.opacity)
-            prop.SetFrame(bool(lab.box))
-            prop.SetFrameColor(*lab.linecolor.value)
-            actor.SetVisibility(True)
-        for key, actor in self._labels.items():
-            if key not in seen:
-                actor.SetVisibility(False)
+        """GlowScript's 2D overlay: labels drawn over the grabbed frame (:mod:`.label_draw`)."""
+        bg = tuple(self.cv.background.value)
+        self._label_specs = [label_draw.spec(lab, self.view, self.width, self.height, bg)
+                             for lab in labels]
 
     def close(self) -> None:
         self.plotter.close()
 
 
 def _tube(obj, view=None):
-    """A curve of radius > 0 as a tube; with a ``view``, its points closer than
-    1.5 px on the screen merged (:mod:`.thinning`; a long trail is thousands of them)."""
-    p, col, rad = obj._arrays()
-    if len(p) < 2:
-        return None
-    if view is not None:
-        p, col, rad = _thin_line((p, col, rad), view)
-    mesh = shapes.tube(p, rad)
-    rgb = _rgb(col)[shapes.tube_vertex_points(len(p))]
-    return mesh.points, mesh.normals, mesh.triangles, rgb
-
-
-def _quads_to_triangles(flat: np.ndarray) -> np.ndarray:
-    """VTK flat quads ``[4, a, b, c, d, ...]`` as triangles (a, b, c), (a, c, d)."""
-    q = flat.reshape(-1, 5)[:, 1:]
-    return np.concatenate([q[:, [0, 1, 2]], q[:, [0, 2, 3]]]).reshape(2, -1, 3) \
-        .transpose(1, 0, 2).reshape(-1, 3)
+    """A curve of radius > 0 as a tube (:func:`.point_draw.mesh`)."""
+    return point_draw.mesh("tube", obj, view, 0.0, 1)

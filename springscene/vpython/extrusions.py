@@ -152,8 +152,12 @@ def _bases(p: Sweep, joint: np.ndarray, seg: np.ndarray) -> np.ndarray:
     """
     d, x, y = p.d[seg], p.x[seg], p.y[seg]
     a = -p.twist[joint][:, None]
-    tx = x * np.cos(a) + np.cross(d, x) * np.sin(a)
-    ty = y * np.cos(a) + np.cross(d, y) * np.sin(a)
+
+    def twisted(v: np.ndarray) -> np.ndarray:    # v turned by a about d (v need not be square to d)
+        along = d * np.einsum("ij,ij->i", d, v)[:, None]
+        return along + (v - along) * np.cos(a) + np.cross(d, v) * np.sin(a)
+
+    tx, ty = twisted(x), twisted(y)
     B = np.stack([tx * p.xscale[joint][:, None], ty * p.yscale[joint][:, None]], axis=2)
     n = p.plane[joint]
     nd = np.einsum("ij,ij->i", n, d)
@@ -174,10 +178,14 @@ def _walls(r: np.ndarray, pos: np.ndarray, M: np.ndarray, colour: np.ndarray,
     v1 = end[:, None] * C + col_out[None, :]
     v2 = end[:, None] * C + nxt[None, :]
     v3 = start[:, None] * C + nxt[None, :]
-    face = _unit(np.cross(points[v2] - points[v0], points[v3] - points[v1])).reshape(-1, 3)
+    # each corner its own normal, from its two edges (extrude.js generate_vertices: N0..N3,
+    # the same for a flat quad, not for a twisted one), summed where columns are shared
     normals = np.zeros_like(points)
-    for v in (v0, v1, v2, v3):
-        np.add.at(normals, v.ravel(), face)
+    corners = (v0, v1, v2, v3)
+    for i, v in enumerate(corners):
+        after, before = points[corners[(i + 1) % 4]], points[corners[(i + 3) % 4]]
+        p = points[v]          # (the next corner - p) x (the one before - p)
+        np.add.at(normals, v.ravel(), _unit(np.cross(after - p, before - p).reshape(-1, 3)))
     tris = np.concatenate([np.stack([v0, v1, v2], -1).reshape(-1, 3),
                            np.stack([v0, v2, v3], -1).reshape(-1, 3)])
     rgb = np.repeat(colour, C, axis=0)
@@ -198,8 +206,14 @@ def _cap(group: list, origin: np.ndarray, M: np.ndarray, normal: np.ndarray,
     return Surface(points, np.tile(_unit(normal), (n, 1)), tris, np.tile(colour, (n, 1)))
 
 
-def sweep(groups: list, p: Sweep, smooth: float, caps: Caps | None) -> Surface:
-    """The surface of shape ``groups`` (each ``[outline, hole, ...]``, 2D) swept along ``p``."""
+def sweep(groups: list, p: Sweep, smooth: float, caps: Caps | None,
+          holes_inward: bool = False) -> Surface:
+    """The surface of shape ``groups`` (each ``[outline, hole, ...]``, 2D) swept along ``p``.
+
+    ``holes_inward``: every contour counter-clockwise, as extrude.js ``find_shape_info``
+    turns each one (holes too), so a hole's walls face into the solid and are lit from
+    behind (dark), as VPython draws an extrusion's holes.
+    """
     joint, seg, colour_joint, start, end = _rows(p)
     M = _bases(p, joint, seg)
     pos = p.pos[joint]
@@ -209,6 +223,8 @@ def sweep(groups: list, p: Sweep, smooth: float, caps: Caps | None) -> Surface:
     for group in groups:
         group = _oriented(group, outer_ccw=hand < 0)
         for i, r in enumerate(group):
+            if i > 0 and holes_inward:
+                r = r[::-1].copy()
             if i == 0 or not p.closed:
                 parts.append(_walls(r, pos, M, colour, start, end, smooth))
         if p.closed or caps is None:
@@ -225,13 +241,31 @@ def sweep(groups: list, p: Sweep, smooth: float, caps: Caps | None) -> Surface:
 # -- the path's frames ------------------------------------------------------------------------
 
 def _first_frame(z: np.ndarray, up: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """x = norm(z x up), y = norm(x x z); GlowScript's choice when z is along up."""
-    x = np.cross(z, up)
-    if np.linalg.norm(x) < 1e-10 * np.linalg.norm(z) * np.linalg.norm(up):
-        side = 1.0 if z @ up > 0 else -1.0
-        return np.array([side, 0.0, 0.0]), np.array([0.0, 0.0, 1.0])
-    x = _unit(x)
-    return x, _unit(np.cross(x, z))
+    """y = norm(up), x = norm(z x y), as the GlowScript bundled with VPython 7.6.5 does.
+
+    (``vpython_libraries/glow.min.js``, ``extrusion``: ``y=norm(args.up); x=norm(z.cross(y))``;
+    later GlowScript sources make y square to z, 7.6.5 does not.) y is not made square to
+    the path: a path slanted to ``up`` gets its cross-section squeezed by the cosine of the
+    slant once the points are slid onto the square end plane. :func:`first_up` keeps
+    ``up`` off the first segment.
+    """
+    y = _unit(up)
+    return _unit(np.cross(z, y)), y
+
+
+def first_up(first: np.ndarray, up: np.ndarray) -> np.ndarray:
+    """``up`` (unit), or a world axis when the first segment is within ~6 degrees of it.
+
+    glow.min.js ``extrusion``: if ``|norm(path[1]-path[0]) x up| < 0.1``, up becomes
+    (0, 1, 0) unless up is near that (cross > 0.2 decides), else (1, 0, 0), else (0, 0, 1).
+    """
+    up = _unit(up)
+    if np.linalg.norm(np.cross(_unit(first), up)) >= 0.1:
+        return up
+    for axis in np.eye(3)[[1, 0, 2]]:
+        if np.linalg.norm(np.cross(up, axis)) > 0.2:
+            return axis
+    return up
 
 
 def _turn(vs: tuple, a: np.ndarray, b: np.ndarray) -> tuple:
@@ -393,7 +427,8 @@ def _sweep_spec(args: dict, path: list) -> tuple[Sweep, Caps | None, float]:
     if len(keep) < 2:
         raise AttributeError("An extrusion path must contain more than one distinct point.")
     pts = np.array([path[i]._xyz() for i in keep])
-    d, x, y = path_frames(pts, np.array(up._xyz()), closed)
+    up = first_up(np.array(path[1]._xyz()) - np.array(path[0]._xyz()), np.array(up._xyz()))
+    d, x, y = path_frames(pts, up, closed)
     plane, sharp = joints(d, closed, smooth, smooth_joints, sharp_joints)
     caps = None if closed else _caps(args, d, plane, colour[keep])
     if caps is not None:
@@ -429,7 +464,7 @@ class extrusion(fused):
         first = args.get("color", vector(1, 1, 1))
         first = first if isinstance(first, vector) else first[0]
         spec, caps, smooth = _sweep_spec(args, path)
-        surface = sweep(groups, spec, smooth, caps)
+        surface = sweep(groups, spec, smooth, caps, holes_inward=True)
         centre, size0 = bounding_size(surface.points)
         self._take(surface, centre, size0)
         self._start(args, size0)

@@ -36,6 +36,8 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from .page_frame import claim_slot
+
 __all__ = [
     "graph", "gcurve", "gdots", "gvbars", "ghbars", "gdisplay", "graphs", "reset",
 ]
@@ -148,6 +150,7 @@ class graph:
         global _selected
         self.width: int = int(args.pop("width", 640))
         self.height: int = int(args.pop("height", 400))
+        claim_slot(self)          # its place on the page, among the canvases
         self.title: str = str(args.pop("title", ""))
         self.xtitle: str = str(args.pop("xtitle", ""))
         self.ytitle: str = str(args.pop("ytitle", ""))

@@ -1,7 +1,8 @@
 """VPython's ``label``: text at a 3D point (or a pixel position), drawn flat on the screen.
 
-Its colours default to the canvas's foreground and background; the renderer
-draws each label as a text actor (:meth:`.draw.Renderer._sync_labels`).
+Its attributes and defaults are GlowScript's (``label`` in ``lib/glow/primitives.js``);
+:mod:`.label_layout` places it and :mod:`.label_draw` draws it over the frame as
+GlowScript's 2D overlay does (:meth:`.draw.Renderer._sync_labels`).
 """
 
 from __future__ import annotations
@@ -18,8 +19,6 @@ class label(_Base):
 
     def __init__(self, **args) -> None:
         object.__setattr__(self, "_constructing", True)
-        for name in ("font",):
-            pass
         self._pos = vector(0, 0, 0)
         self._text = ""
         self._xoffset = self._yoffset = 0.0
@@ -35,6 +34,8 @@ class label(_Base):
         self._pixel_pos = False
         self._visible = True
         self._font = "sans"
+        self._linewidth = 1.0
+        self._space = 0.0
         for name in ("pos", "color", "background", "linecolor"):
             if name in args:
                 setattr(self, "_" + name, _vec(args.pop(name), name))
@@ -72,8 +73,9 @@ class label(_Base):
     pixel_pos = property(lambda self: self._pixel_pos,
                          lambda self, v: self._set("_pixel_pos", bool(v)))
     font = property(lambda self: self._font, lambda self, v: self._set("_font", str(v)))
-    space = property(lambda self: 0.0, lambda self, v: None)
-    linewidth = property(lambda self: 1.0, lambda self, v: None)
+    space = property(lambda self: self._space, lambda self, v: self._set("_space", float(v)))
+    linewidth = property(lambda self: self._linewidth,
+                         lambda self, v: self._set("_linewidth", float(v)))
 
     def _set(self, attr: str, value) -> None:
         object.__setattr__(self, attr, value)

@@ -79,13 +79,15 @@ class standard(_Base):
         self._oldaxis = None
         self._adjustupaxis = True
         self._pickable = True
-        # VPython's order: plain vectors, then axis/size, then scalars, then linked scalars
-        for name in ("pos", "up", "color"):
+        # VPython's order: plain vectors, then axis, size, up, then scalars, then linked scalars
+        for name in ("pos", "color"):
             if name in args:
                 setattr(self, "_" + name, _vec(args.pop(name), name))
         if "trail_color" in args:
             self._trail_color = _vec(args.pop("trail_color"), "trail_color")
-        for name in ("axis", "size"):
+        # vpython.py ``standardAttributes.setup`` (attrLists: 'axis', 'size', 'up'): axis turns
+        # the default up with it, then up turns the axis (adjust_axis), so up stays as given
+        for name in ("axis", "size", "up"):
             if name in args:
                 setattr(self, name, _vec(args.pop(name), name))
         for name in ("visible", "opacity", "shininess", "emissive", "make_trail", "trail_type",
@@ -161,11 +163,15 @@ class standard(_Base):
                 radius = 0 if is_lenient() else self._trail_radius or 0   # VPython 6: thin
                 self._trail = curve(canvas=self._canvas, color=vector(colour), radius=radius,
                                     retain=self._retain, frame=self._frame)
+            self._trail._unlisted = not is_lenient()   # VPython 7 lists no make_trail curve
         self._trail.append(vector(self._pos))
 
     def clear_trail(self) -> None:
-        if self._trail is not None:
-            self._trail.clear()
+        """Clear the trail, with its pieces from before a ``make_trail = False``: GlowScript
+        stops the object's one ``attach_trail`` then, and ``clear_trail`` clears it all."""
+        for piece in [*self.__dict__.get("_stopped_trails", ()), self._trail]:
+            if piece is not None:
+                piece.clear()
 
     @property
     def make_trail(self) -> bool:
@@ -175,7 +181,9 @@ class standard(_Base):
     def make_trail(self, value) -> None:
         value = bool(value)
         if not value:
-            self._trail = None            # the drawn trail stays; a new one starts next time
+            if self._trail is not None:   # the drawn trail stays; a new one starts next time
+                self.__dict__.setdefault("_stopped_trails", []).append(self._trail)
+            self._trail = None
         elif not self._make_trail and not self._constructing:
             self._make_trail = True
             self._add_trail_point()

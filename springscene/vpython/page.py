@@ -1,7 +1,9 @@
 """The web page a VPython program would have shown, written beside its video.
 
 VPython puts, from top to bottom: the canvas's title area, the canvas, its caption
-area, then the graphs. :func:`write_page` writes that as one self-contained HTML5
+area, then the graphs. When the video is that whole page (the default, :mod:`.film`),
+the page shows the video once with the widgets under it. With ``--canvas-only``
+:func:`write_page` writes the page around the canvas's video as one self-contained HTML5
 file: the title and caption are the program's own HTML (inserted as it is, as
 VPython does; both areas keep line breaks and spaces, ``white-space: pre``, as
 VPython's anchors do), the video or image stands where the canvas was, widgets are
@@ -134,7 +136,7 @@ def _relative(ref: str, base: Path) -> str:
 
 def write_page(path: str | Path, *, title_html: str, caption_html: str, media: str,
                media_kind: str, width: int, height: int, graph_images: list[str],
-               widgets: list, printed: str = "") -> Path:
+               widgets: list, printed: str = "", page_video: bool = False) -> Path:
     """Write the page VPython would show, atomically.
 
     Parameters
@@ -155,6 +157,9 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         Controls and wtexts in the order made (:func:`.widgets.widgets_in_order`).
     printed : str
         What the program printed: GlowScript shows it in a box below the canvas.
+    page_video : bool
+        The media is the whole page (titles, canvases, captions and graphs drawn in
+        it): the page shows it once, with the widgets under it, and nothing twice.
 
     Returns
     -------
@@ -168,17 +173,13 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
     base = path.parent
     name = html.unescape(_TAG.sub("", str(title_html))).strip() or Path(media).name
     canvas = _canvas_html(media, media_kind, int(width), int(height), base)
-    title_ws = [x for x in widgets if getattr(x, "anchor", "caption") == "title"]
-    caption_ws = [x for x in widgets if getattr(x, "anchor", "caption") != "title"]
+    title_ws, caption_ws = _split_widgets(widgets, page_video)
+    if page_video:           # the title, caption and graphs are in the video already
+        title_html, caption_html, graph_images = "", "", []
     text = "\n".join([
-        "<!DOCTYPE html>",
-        '<html lang="en">',
-        "<head>",
-        '<meta charset="utf-8">',
+        '<!DOCTYPE html>\n<html lang="en">\n<head>\n<meta charset="utf-8">',
         f"<title>{html.escape(' '.join(name.split()))}</title>",
-        f"<style>\n{_STYLE}</style>",
-        "</head>",
-        "<body>",
+        f"<style>\n{_STYLE}</style>\n</head>\n<body>",
         f'<div class="vp-title">{_fill(str(title_html), title_ws)}</div>',
         f'<div class="vp-canvas">{canvas}</div>',
         f'<div class="vp-caption">{_fill(str(caption_html), caption_ws)}</div>',
@@ -186,12 +187,18 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         *_graphs_html(graph_images, base),
         "</div>",
         *([f'<pre class="vp-print">{html.escape(printed)}</pre>'] if printed else []),
-        "</body>",
-        "</html>",
-        "",
+        "</body>\n</html>\n",
     ])
     _write_atomic(path, text)
     return path
+
+
+def _split_widgets(widgets: list, page_video: bool) -> tuple[list, list]:
+    """The widgets of the title area and of the caption area (all under a page video)."""
+    if page_video:
+        return [], list(widgets)
+    title_ws = [x for x in widgets if getattr(x, "anchor", "caption") == "title"]
+    return title_ws, [x for x in widgets if getattr(x, "anchor", "caption") != "title"]
 
 
 def _canvas_html(media: str, media_kind: str, w: int, h: int, base: Path) -> str:

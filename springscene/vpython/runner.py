@@ -18,18 +18,15 @@ import types
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
-
 from .. import vpython as vp
 from ..errors import ProgramError, UserError
-from ..outputs import VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps, \
-    write_png
-from . import attachments, dialects, glowscript, runtime, visual6, widgets
+from ..outputs import VIDEO_FORMATS, atomic_path, check_output, check_video_fps, write_png
+from . import attachments, autoscale, dialects, glowscript, runtime, visual6, widgets
 from .vector import set_lenient
 from .canvas import canvas
-from .draw import Renderer
+from .film import Film, Printed
 from .graph import graphs
-from .graph_images import GraphStrip, write_images
+from .graph_images import write_images
 from .page import write_page
 
 FORMATS = VIDEO_FORMATS + (".png",)
@@ -135,101 +132,16 @@ def _restore_modules(saved: dict) -> None:
             sys.modules[name] = module
 
 
-class _Printed:
-    """The program's standard output, passed on and kept (up to ``limit`` characters)
-    for the page, where GlowScript shows what a program prints."""
-
-    def __init__(self, out, limit: int = 100_000) -> None:
-        self._out, self._limit = out, limit
-        self.parts: list[str] = []
-        self.size = 0
-
-    def write(self, text: str) -> int:
-        if self.size < self._limit:
-            self.parts.append(text[:self._limit - self.size])
-            self.size += len(self.parts[-1])
-        return self._out.write(text)
-
-    def __getattr__(self, name: str):
-        return getattr(self._out, name)
-
-    def text(self) -> str:
-        return "".join(self.parts)
-
-
-class _Film:
-    """Takes the frames: draws the shown canvas, adds the graph strip, feeds the writer."""
-
-    def __init__(self, tmp: Path | None, fps: int, overlays: tuple[str, ...], backend: str,
-                 antialias: bool, on_frame) -> None:
-        self.tmp, self.fps, self.overlays = tmp, fps, overlays
-        self.backend, self.antialias, self.on_frame = backend, antialias, on_frame
-        self.renderers: dict[int, object] = {}
-        self.shown = None
-        self.writer = None
-        self.strip = None
-        self.graphs_only = False            # no 3D object at all: the video is the graphs
-        self.printed: _Printed | None = None
-        self.frames = 0
-        self.notes: list[str] = []
-
-    def renderer(self, cv):
-        r = self.renderers.get(id(cv))
-        if r is None:
-            r = self.renderers[id(cv)] = Renderer(cv, self.antialias, self.backend)
-        return r
-
-    def _choose_canvas(self):
-        shown = [cv for cv in canvas._all if cv._visible and cv._objects]
-        if len(shown) > 1:
-            self.notes.append(f"{len(shown)} canvases have objects; the video shows the first")
-        return shown[0] if shown else canvas.get_selected()
-
-    def picture(self) -> np.ndarray:
-        if self.shown is None:
-            self.shown = self._choose_canvas()
-        return self.renderer(self.shown).frame()
-
-    def take(self) -> None:
-        image = self.picture()
-        if self.writer is None:
-            h, w = image.shape[:2]
-            self.graphs_only = not any(cv._objects for cv in canvas._all) and bool(graphs())
-            if self.graphs_only:
-                self.notes.append("the program draws only graphs: the video shows them")
-            if "graph" in self.overlays or self.graphs_only:
-                if graphs():
-                    self.strip = GraphStrip(list(graphs()), w)
-                else:
-                    self.notes.append("--overlay graph: the program had made no graph "
-                                      "by its first frame")
-            size = (w, (0 if self.graphs_only else h)
-                    + (self.strip.size[1] if self.strip is not None else 0))
-            self.writer = VideoWriter(self.tmp, self.fps, size)
-        if self.graphs_only:
-            image = self.strip.draw()
-        elif self.strip is not None:
-            image = np.vstack([image, self.strip.draw()])
-        self.writer.write(image)
-        self.frames += 1
-        if self.on_frame is not None:
-            self.on_frame(self.frames - 1, image)
-
-    def close(self, ok: bool) -> None:
-        if self.writer is not None:
-            self.writer.__exit__(None if ok else RuntimeError, None, None)
-        for r in self.renderers.values():
-            r.close()
-
-
 def run_program(program, out, *, duration: float | None = None, frames: int | None = None,
                 fps: int = DEFAULT_FPS, backend: str = "auto", antialias: bool = True,
-                overlays: tuple[str, ...] = (), page: bool = True,
+                overlays: tuple[str, ...] = (), page: bool = True, canvas_only: bool = False,
                 on_frame=None, on_dialect=None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF) or final still (PNG).
 
-    Beside ``out`` go ``page.html`` (the page VPython would show, the video where
-    the canvas was), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
+    A frame is the program's page as VPython lays it out (titles, canvases, captions,
+    graphs: :mod:`.film`), or with ``canvas_only`` the first canvas alone at its own
+    size. Beside ``out`` go ``<out's name>.html`` (the page VPython would show, with the
+    video), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
     ``on_frame(index, image)`` is called for each frame taken (for tests);
     ``on_dialect(dialect)`` once the program's dialect is known, before it runs.
     """
@@ -242,7 +154,8 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     start = time.perf_counter()
     images: list[Path] = []
     with atomic_path(out) as tmp:
-        film = _Film(None if still else tmp, fps, overlays, backend, antialias, on_frame)
+        film = Film(None if still else tmp, fps, overlays, backend, antialias, on_frame,
+                    canvas_only)
 
         def capture(cv, name: str) -> None:
             target = out.parent / Path(name).name
@@ -251,21 +164,25 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
 
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
-        timeline.on_render = attachments.update
+        # at each of VPython's renders: attached trails and arrows move, autoscale widens
+        timeline.on_render = lambda: (attachments.update(), autoscale.at_render())
         ended = _execute(code, path, dialect, timeline, capture, limit, film)
         attachments.update()      # the render after the program's last step
         try:
             if still:
-                write_png(tmp, film.picture())
+                picture = film.still()
+                write_png(tmp, picture)
+                film.size = (picture.shape[1], picture.shape[0])
             elif film.frames == 0:            # no rate(): the final scene is the video
                 film.take()
         finally:
             film.close(True)
         result = ProgramResult(out, 1 if still else film.frames, fps, timeline.seconds,
                                time.perf_counter() - start, ended,
-                               size=film.writer.size if film.writer is not None else None,
+                               size=film.writer.size if film.writer is not None else film.size,
                                dialect=dialect.name)
-    result.images = images + _write_extras(out, result, page, still, film.printed.text())
+    result.images = images + _write_extras(out, result, page, still, film.printed.text(),
+                                           canvas_only)
     result.notes = film.notes + widgets.notes()
     if timeline.capped_rate is not None:
         result.notes.append(f"rate({timeline.capped_rate:g}) ran as fast as it goes: each "
@@ -311,7 +228,7 @@ def _compile(path: Path) -> tuple[types.CodeType, dialects.Dialect]:
 
 
 def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
-             timeline: runtime.Timeline, capture, limit: str, film: _Film) -> str:
+             timeline: runtime.Timeline, capture, limit: str, film: Film) -> str:
     """Run the program as ``__main__`` on ``timeline``; how it ended ("program" or
     ``limit``). Its modules, ``sys.argv`` and ``sys.path`` are put back afterwards."""
     saved = _install_modules()
@@ -330,7 +247,7 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
         names.update(glowscript.names(vp), **dialects.HELPERS)
     ended, ok = "program", False
     saved_stdout = sys.stdout
-    sys.stdout = film.printed = _Printed(saved_stdout)
+    sys.stdout = film.printed = Printed(saved_stdout)
     try:
         exec(code, names)
         ok = True
@@ -370,16 +287,17 @@ def _old_time_clock(dialect: dialects.Dialect):
 
 
 def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
-                  printed: str = "") -> list[Path]:
-    """The program's graphs as PNGs and ``page.html`` beside ``out``."""
+                  printed: str = "", canvas_only: bool = False) -> list[Path]:
+    """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``."""
     written = list(write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if page:
         cv = next((c for c in canvas._all if c._objects), canvas.get_selected())
         kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
-        result.page = write_page(out.parent / "page.html", title_html=cv.title,
+        result.page = write_page(out.with_suffix(".html"), title_html=cv.title,
                                  caption_html=cv.caption, media=out.name, media_kind=kind,
                                  width=result.size[0] if result.size else int(cv.width),
                                  height=result.size[1] if result.size else int(cv.height),
                                  graph_images=[p.name for p in written],
-                                 widgets=widgets.widgets_in_order(), printed=printed)
+                                 widgets=widgets.widgets_in_order(), printed=printed,
+                                 page_video=not canvas_only)
     return written

@@ -18,7 +18,8 @@ A ``texture`` is, as in primitives.js (``texture: set``):
 
 :func:`spec_of` turns the value into a hashable :class:`TextureSpec` (the
 renderer batches objects by it); :func:`image_of` gives its picture. Bump maps
-are accepted everywhere and drawn without bumps.
+(``{'file': ..., 'bumpmap': bumpmaps.stones}``) perturb the lit normals as
+GlowScript's fragment shaders do (:mod:`.texture_shading`).
 """
 
 from __future__ import annotations
@@ -60,7 +61,7 @@ class textures:
 
 
 class bumpmaps:
-    """VPython's built-in bump maps: accepted, and drawn without bumps."""
+    """VPython's built-in bump maps (``texture={'file': ..., 'bumpmap': bumpmaps.rock}``)."""
 
     gravel = ":gravel_bumpmap.jpg"
     rock = ":rock_bumpmap.jpg"
@@ -85,6 +86,7 @@ class TextureSpec(NamedTuple):
     flipx: bool = False
     flipy: bool = False
     turn: int = 0
+    bump: str = ""          # the bump map's ``builtin:<name>`` or file path; "" for none
 
     @property
     def covers_all(self) -> bool:
@@ -142,6 +144,34 @@ def _resolve(name: str, cwd: str, folder: str) -> tuple[str | None, str]:
     return None, f"texture {name!r}: no such image file; drawn without it"
 
 
+def bump_name(name: str) -> str | None:
+    """The built-in bump map a GlowScript bump-map name or URL stands for, else None."""
+    for prefix in GLOWSCRIPT_PREFIXES:
+        if name.startswith(prefix):
+            m = _BUMP_FILE.match(name[len(prefix):])
+            if m and m.group(1) in texture_images.BUMP_NAMES:
+                return m.group(1)
+    return None
+
+
+def _bump_source(value) -> str:
+    """A ``bumpmap``'s source (``builtin:<name>`` or a file), "" (with a note) if none."""
+    if value is None:
+        return ""
+    if not isinstance(value, str):
+        _note(f"bumpmap {value!r}: not a file name; drawn without bumps")
+        return ""
+    builtin = bump_name(value)
+    if builtin is not None:
+        return "builtin:" + builtin
+    source, why = _source(value)
+    if source is None or source.startswith("builtin:"):
+        _note(why.replace("texture", "bumpmap", 1) if why else
+              f"bumpmap {value!r} is a texture, not a bump map; drawn without bumps")
+        return ""
+    return source
+
+
 def _source_or_note(name: str) -> str | None:
     source, why = _source(name)
     if source is None:
@@ -181,7 +211,8 @@ def _from_dict(value: dict) -> TextureSpec | None:
     left, right, sides = _places(value.get("place"))
     turns = int(round(float(value.get("turn", 0) or 0))) % 4
     return TextureSpec(source, left, right, sides, bool(value.get("flipx", False)),
-                       bool(value.get("flipy", False)), turns)
+                       bool(value.get("flipy", False)), turns,
+                       _bump_source(value.get("bumpmap")))
 
 
 def spec_of(value) -> TextureSpec | None:
@@ -225,6 +256,20 @@ def _read(source: str, mtime: int) -> np.ndarray:
     return image
 
 
+def bump_of(spec: TextureSpec) -> np.ndarray | None:
+    """The bump map of ``spec`` (RGB uint8, a normal map), or None (none, or unreadable)."""
+    if not spec.bump:
+        return None
+    try:
+        if spec.bump.startswith("builtin:"):
+            return texture_images.bump_image(spec.bump[len("builtin:"):])
+        return _read(spec.bump, os.stat(spec.bump).st_mtime_ns)
+    except (OSError, ValueError, RuntimeError) as exc:
+        _note(f"bumpmap {os.path.basename(spec.bump)!r} could not be read ({exc}); "
+              "drawn without bumps")
+        return None
+
+
 def load(spec: TextureSpec) -> np.ndarray | None:
     """The picture for ``spec``; None (with a note) when the file cannot be read."""
     try:
@@ -261,5 +306,5 @@ def reset() -> None:
     _read.cache_clear()
 
 
-__all__ = ["textures", "bumpmaps", "TextureSpec", "spec_of", "image_of", "load",
+__all__ = ["textures", "bumpmaps", "TextureSpec", "spec_of", "image_of", "load", "bump_of",
            "transform_uv", "builtin_name", "reset"]

@@ -2,8 +2,9 @@
 so a thin line (or tube) of thousands of points is thinned on screen before drawing.
 
 :func:`thin_line` drops the points closer than ``LINE_MIN_SEGMENT_PX`` along the line
-on screen; :func:`curve_bounds` gives the curves' bounds from their points, for
-autoscale before they are drawn (the renderer draws them once the camera is placed).
+on screen; :func:`curve_bounds` gives the curves' bounds from their points before they
+are drawn (the renderer draws them once the camera is placed). Autoscale does not use
+these: it bounds objects by VPython's own rule (:mod:`.autoscale`).
 """
 
 from __future__ import annotations
@@ -14,8 +15,8 @@ LINE_MIN_SEGMENT_PX = 1.5  # px: shorter segments of a thin line are merged
 
 
 def curve_bounds(objs, kind: str) -> np.ndarray:
-    """Bounds (n, 2, 3) of curves from their points (a tube's widened by its radius), for
-    autoscale before they are drawn."""
+    """Bounds (n, 2, 3) of curves from their points (a tube's widened by its radius),
+    before they are drawn."""
     found = []
     for o in objs:
         p, _, rad = o._arrays()

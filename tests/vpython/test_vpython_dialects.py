@@ -235,7 +235,7 @@ def test_x_y_z_are_pos_in_vpython6_and_own_attributes_in_vpython7(tmp_path):
 
 def _frames_of(program, tmp_path, **options) -> list[np.ndarray]:
     frames = []
-    run_program(program, tmp_path / "v.mp4", page=False, fps=10,
+    run_program(program, tmp_path / "v.mp4", page=False, fps=10, canvas_only=True,
                 on_frame=lambda i, img: frames.append(img.astype(int)), **options)
     return frames
 
@@ -309,7 +309,7 @@ def test_what_a_program_prints_is_on_its_page_too(tmp_path):
     proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
     assert proc.returncode == 0, proc.stderr
     assert "KE = 2 J <b>" in proc.stdout                        # to the terminal, as before
-    page = (tmp_path / "page.html").read_text()
+    page = (tmp_path / "x.html").read_text()
     assert '<pre class="vp-print">KE = 2 J &lt;b&gt;\n</pre>' in page
 
 

@@ -61,7 +61,7 @@ def test_box_faces_take_the_whole_picture_upright():
     m = textured_box()
     assert m.uv.tolist() == [[0, 1], [0, 0], [1, 0], [1, 1]] * 6      # makeCube's texpos
     for face in range(6):
-        p, uv, n = m.points[4 * face:4 * face + 4], m.uv[4 * face:4 * face + 4], m.normals[4 * face]
+        p, n = m.points[4 * face:4 * face + 4], m.normals[4 * face]
         # u and v run along two edges of the face; seen from outside, u x v points out
         du = p[2] - p[1]                # (0,0) -> (1,0)
         dv = p[0] - p[1]                # (0,0) -> (0,1)
@@ -132,7 +132,8 @@ def test_names_urls_and_dicts(vp):
     assert spec_of(url) == TextureSpec("builtin:flower")
     s = spec_of({"file": vp.textures.rug, "place": ["right", "sides"], "flipy": True, "turn": -3,
                  "bumpmap": vp.bumpmaps.stones})
-    assert s == TextureSpec("builtin:rug", left=False, right=True, sides=True, flipy=True, turn=1)
+    assert s == TextureSpec("builtin:rug", left=False, right=True, sides=True, flipy=True, turn=1,
+                            bump="builtin:stones")
     assert spec_of({"file": vp.textures.rug, "place": "ends"})[1:4] == (True, True, False)
     assert spec_of(None) is None and not notes()
 
@@ -146,20 +147,53 @@ def test_an_unknown_url_or_missing_file_is_a_note_never_an_error(vp):
     assert len(notes()) == 3                                          # once each
 
 
-def test_builtin_pictures_are_made_once_deterministic_and_distinct():
+# the wheel's RECORD (vpython-7.6.5.dist-info/RECORD): sha256, urlsafe base64, no padding
+VPYTHON_RECORD = {
+    "earth_texture.jpg": "yyVpq89KgmC2YtwLBAE3Nt7CnK3KvAGPgQuQvHYO0ds",
+    "flower_texture.jpg": "ROHzoYuZ3cFci3IhcUjNEfiZD6SI6m8MK6craf1rj1U",
+    "granite_texture.jpg": "Hj-WuhIM1ynSf0PO3BKGKqmP9nmB9J7j_hZxiCo4Kzc",
+    "gravel_bumpmap.jpg": "BT4ZgOMKVaOqWJcFfYq-8Wjz9IUrTgPif5otbPBd_JE",
+    "gravel_texture.jpg": "7Wws9Fgla3kxuIf2SRrqYcnj13s_JQAV-6S1VXC5bnM",
+    "metal_texture.jpg": "r4DNpBW1tfT_XyNUFYw-OwVQ6Dfi6ccyPWr3k8Lys3E",
+    "rock_bumpmap.jpg": "s82eR7GCBLoInkPTNQ9Jllo-DNumphbYUc8BbKPzeTs",
+    "rock_texture.jpg": "f8MjGwTjmwUgXWaPlLWFJL1t2TtFFbto86g9Bsz9KPo",
+    "rough_texture.jpg": "uxErPn3TXdeTRp1PUnyALfPTXlTFRU_rOpAx08cWl-0",
+    "rug_texture.jpg": "Td8JaEER0NtPEdypHq9VRxuFzc5ctbF37wLP-cLrA1Q",
+    "stones_bumpmap.jpg": "0HMVgD_vxxbWShFPuuYWT8VE4TSVbo_AhLD7xg6pblk",
+    "stones_texture.jpg": "sXx38jOwzL2FeKDxThUAjW3tj7OMCHGnSVMJtlo_MKk",
+    "stucco_bumpmap.jpg": "Rgc_EyFg-t1ofrUm2k6Qtx4axvqZ_99jnSgr25kZNZw",
+    "stucco_texture.jpg": "NtdOzndRuv8ucv6NZM9iNFJZC6g1w_zNtApnlMDwBLQ",
+    "wood_old_bumpmap.jpg": "7ya6xA6x-78DA8BcfnAmjVkUt11YK81mFF-Bi4APWIw",
+    "wood_old_texture.jpg": "WbEWJntcC82sKKyBP80lhbtQxvz34LozUPzdmWLMhOQ",
+    "wood_texture.jpg": "_mo8Sl-kpDNlLqZp0gpiVCx2LYUT-mxVaTxUu8DVWwk",
+    "LICENSE-VPython.txt": "yYGFz27mxqAAQ5jDMqFPXhLkXYhP4aG_76e8XqmRE1c",   # LICENSE.txt
+}
+TEXTURE_DATA = ROOT / "springscene" / "vpython" / "data" / "vpython_textures"
+
+
+def test_the_pictures_are_vpythons_own_files_unmodified():
+    import base64
+    import hashlib
+
+    shipped = {p.name for p in TEXTURE_DATA.iterdir()}
+    assert shipped == set(VPYTHON_RECORD)
+    for name, digest in VPYTHON_RECORD.items():
+        sha = hashlib.sha256((TEXTURE_DATA / name).read_bytes()).digest()
+        assert base64.urlsafe_b64encode(sha).rstrip(b"=").decode() == digest, name
+    assert {f"{n}_texture.jpg" for n in texture_images.NAMES} | \
+        {f"{n}_bumpmap.jpg" for n in texture_images.BUMP_NAMES} == shipped - {"LICENSE-VPython.txt"}
+
+
+def test_builtin_pictures_are_read_once_as_rgb():
     images = {n: texture_images.builtin_image(n) for n in texture_images.NAMES}
     assert all(im.dtype == np.uint8 and im.ndim == 3 and im.shape[2] == 3
-               for im in images.values())
+               and not im.flags.writeable for im in images.values())
     assert texture_images.builtin_image("wood") is images["wood"]     # cached
-    fresh = texture_images._to_uint8(texture_images.wood(texture_images._rng("wood")))
-    assert np.array_equal(fresh, images["wood"])                      # seeded
-    means = np.array([im.reshape(-1, 3).mean(axis=0) for im in images.values()])
-    assert len({tuple(np.round(m)) for m in means}) == len(images)
+    rough = images["rough"]                                          # a grey file, as RGB
+    assert np.array_equal(rough[..., 0], rough[..., 2])
     wood, metal = images["wood"].astype(float), images["metal"].astype(float)
     assert wood[..., 0].mean() > wood[..., 2].mean() + 40             # wood is brown
     assert abs(metal[..., 0].mean() - metal[..., 2].mean()) < 20      # metal is grey
-    # grain and brushing run left to right: rows vary less along them than columns do
-    assert np.abs(np.diff(metal, axis=1)).mean() < np.abs(np.diff(metal, axis=0)).mean()
     earth = images["earth"].astype(float)
     assert earth.shape[1] == 2 * earth.shape[0]                       # equirectangular
     # the Pacific in the middle of the left quarter is blue; the Sahara is not
@@ -167,11 +201,18 @@ def test_builtin_pictures_are_made_once_deterministic_and_distinct():
     pacific = earth[h // 2 - 10:h // 2 + 10, w // 8 - 10: w // 8 + 10].reshape(-1, 3).mean(0)
     sahara = earth[int(h * 0.37), int(w * 0.53)]
     assert pacific[2] > pacific[0] + 60 and sahara[0] > sahara[2] + 30
+    bump = texture_images.bump_image("stones").astype(float) / 255 * 2 - 1
+    assert bump[..., 2].mean() > 0.8                      # normal maps: mostly straight out
+    with pytest.raises(KeyError):
+        texture_images.bump_image("earth")
 
 
-def test_the_earth_picture_says_where_it_comes_from():
+def test_the_pictures_say_where_they_come_from():
     readme = (ROOT / "springscene" / "vpython" / "data" / "README.md").read_text()
-    assert "earth.jpg" in readme and "Natural Earth" in readme and "public domain" in readme
+    assert "vpython_textures/" in readme and "7.6.5" in readme and "MIT" in readme
+    assert "22b98eb35d9fef8b43582680a80af40f357a6df760dd2b1d774383fb6641d3aa" in readme
+    licence = (TEXTURE_DATA / "LICENSE-VPython.txt").read_text()
+    assert "John Coady, Ruth Chabay, and Bruce Sherwood" in licence
 
 
 # -- pictures -----------------------------------------------------------------------------
@@ -207,9 +248,11 @@ def test_an_earth_has_blue_oceans_and_land_where_the_map_has_them(vp):
     for lat, lon in ((0, -25), (-35, -15), (25, -45), (10, -35)):      # the Atlantic
         r, g, b = rgb(lat, lon)
         assert b > r + 25, (lat, lon, r, g, b)
-    for lat, lon in ((23, 10), (23, 45), (48, 15), (-20, 25)):         # Sahara, Arabia, Europe
+    for lat, lon in ((23, 10), (23, 45), (-20, 25)):                   # Sahara, Arabia, Kalahari
         r, g, b = rgb(lat, lon)
         assert r > b + 10 and g > b, (lat, lon, r, g, b)
+    r, g, b = rgb(48, 15)                                               # Europe: green
+    assert g > b + 15 and g > r + 15
     r, g, b = rgb(0, 22)                                                # the Congo: green
     assert g > b + 10 and g >= r - 10
     north, south = rgb(50, 10), rgb(-50, 10)                            # Europe vs ocean
@@ -313,6 +356,91 @@ def test_object_meshes_with_texture_coordinates_for_compounds(vp):
     c._dirty = True
     untextured, _ = _render(vp)
     assert not np.array_equal(untextured, textured)
-    col, row = view.project(np.array([0, 0, 0.75]))          # the rug's gold centre
+    col, row = view.project(np.array([0, 0, 0.75]))          # the rug's dark red centre
     r, g, b_ = textured[int(row), int(col)]
-    assert r > 150 and g > 100 and b_ < 90
+    assert r > 50 and r > g + 40 and r > b_ + 40
+
+
+@pytest.mark.parametrize("opacity", [1.0, 0.5])
+def test_a_one_colour_texture_is_lit_as_that_colour_with_a_white_highlight(vp, tmp_path, opacity):
+    """GlowScript multiplies the texel into the diffuse colour before lighting and adds the
+    specular untinted (opaque_render_fragment.shader, peel_color_fragmentC1 ``lightAt``): a
+    white sphere under a plain teal picture is drawn as a teal sphere, highlight and all."""
+    teal = (20, 150, 170)
+    iio.imwrite(tmp_path / "teal.png", np.full((16, 16, 3), teal, dtype=np.uint8))
+    vp.scene.range = 1.2
+    s = vp.sphere(radius=1, texture=str(tmp_path / "teal.png"), opacity=opacity)
+    textured, _ = _render(vp)
+    s.texture = None
+    s.color = vp.vector(*teal) / 255
+    plain, _ = _render(vp)
+    rows, cols = np.mgrid[0:400, 0:400]
+    inner = np.hypot(rows - 200, cols - 200) < 140       # inside both meshes' outlines
+    diff = np.abs(textured - plain)[inner]
+    assert diff.max() <= 6 and diff.mean() < 0.5
+    top = textured[textured.sum(axis=2).argmax() // textured.shape[1]]
+    assert top.max(axis=0)[0] > 60                   # the highlight is white: red appears
+
+
+@pytest.mark.parametrize("transform", [{}, {"flipx": True}, {"turn": 1}, {"flipy": True, "turn": 3}])
+def test_a_bump_map_bends_the_normal_along_glowscripts_bumpaxis(vp, tmp_path, transform):
+    """opaque_render_fragment.shader: ``normal = Nb.x*bumpX + Nb.y*cross(normal, bumpX) +
+    Nb.z*normal``, bumpX the box face's bumpaxis (mesh.js makeCube: the way the unflipped,
+    unturned u grows, +x on the front face). A bump map of Nb = (1, 0, 0) everywhere turns
+    the front face's normal to +x: it is lit as the plain box's right face is, whatever
+    the flips and turns do to the picture."""
+    iio.imwrite(tmp_path / "white.png", np.full((16, 16, 3), 255, dtype=np.uint8))
+    iio.imwrite(tmp_path / "bump.png", np.full((16, 16, 3), (255, 128, 128), dtype=np.uint8))
+    vp.scene.range = 1.5
+    vp.scene.forward = vp.vector(-1, -0.3, -1)
+    b = vp.box(size=vp.vector(1, 1, 1), shininess=0,
+               texture={"file": str(tmp_path / "white.png"),
+                        "bumpmap": str(tmp_path / "bump.png"), **transform})
+    bumped, view = _render(vp)
+    b.texture = None
+    plain, _ = _render(vp)
+
+    def at(img, point):
+        col, row = view.project(np.array(point))
+        return img[int(row) - 2:int(row) + 3, int(col) - 2:int(col) + 3].reshape(-1, 3).mean(0)
+
+    front, right = (0, 0, 0.5), (0.5, 0, 0)
+    assert np.abs(at(plain, front) - at(plain, right)).max() > 20     # the faces differ
+    assert at(bumped, front) == pytest.approx(at(plain, right), abs=3)
+
+
+def test_a_bump_map_that_cannot_be_had_is_a_note(vp, tmp_path):
+    s = spec_of({"file": vp.textures.rock, "bumpmap": "no_such_bumps.jpg"})
+    assert s == TextureSpec("builtin:rock") and "no_such_bumps.jpg" in notes()[-1]
+    url = "https://s3.amazonaws.com/glowscript/textures/rock_bumpmap.jpg"
+    assert spec_of({"file": vp.textures.rock, "bumpmap": url}).bump == "builtin:rock"
+    iio.imwrite(tmp_path / "b.png", np.full((4, 4, 3), 128, dtype=np.uint8))
+    assert spec_of({"file": vp.textures.rock, "bumpmap": str(tmp_path / "b.png")}).bump == \
+        str((tmp_path / "b.png").resolve())
+
+
+def test_a_cylinders_far_half_bends_its_bumps_the_other_way(vp, tmp_path):
+    """mesh.js makeCylinder: the side's bumpaxis is +x (the way u grows) on the half whose
+    v grows with the angle and -x on the other (mirrored) half: with Nb = (1, 0, 0) the
+    near side (seen from +z) is lit as a +x face, the far side (seen from -z) as a -x face."""
+    iio.imwrite(tmp_path / "white.png", np.full((16, 16, 3), 255, dtype=np.uint8))
+    iio.imwrite(tmp_path / "bump.png", np.full((16, 16, 3), (255, 128, 128), dtype=np.uint8))
+    texture = {"file": str(tmp_path / "white.png"), "bumpmap": str(tmp_path / "bump.png")}
+    vp.scene.range = 1.5
+    b = vp.box(size=vp.vector(1, 1, 1), shininess=0)
+    faces = {}
+    for forward, face in (((-1, 0, -1), (0.5, 0, 0)), ((1, 0, 1), (-0.5, 0, 0))):
+        vp.scene.forward = vp.vector(*forward)
+        img, view = _render(vp)
+        col, row = view.project(np.array(face))
+        faces[face[0] > 0] = img[int(row) - 2:int(row) + 3, int(col) - 2:int(col) + 3].mean((0, 1))
+    assert np.abs(faces[True] - faces[False]).max() > 20                # +x and -x differ
+    b.visible = False
+    vp.cylinder(pos=vp.vector(-0.5, 0, 0), axis=vp.vector(1, 0, 0), radius=0.5, shininess=0,
+                texture=texture)
+    for forward, plus_x in (((0, 0, -1), True), ((0, 0, 1), False)):
+        vp.scene.forward = vp.vector(*forward)
+        img, view = _render(vp)
+        col, row = view.project(np.array([0, 0, 0.5 if plus_x else -0.5]))
+        side = img[int(row) - 2:int(row) + 3, int(col) - 2:int(col) + 3].mean((0, 1))
+        assert side == pytest.approx(faces[plus_x], abs=4), plus_x

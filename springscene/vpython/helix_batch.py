@@ -1,0 +1,248 @@
+"""Every helix of one look as one mesh, numpy-vectorised, with a level of detail.
+
+VPython's helix (primitives.js ``helix.__update``) is a curve of ``coils * 60 + 1``
+points (``NCHORDS = 60`` chords per coil) drawn as GlowScript's 16-sided tube, of
+wire radius ``thickness / 2`` (``size.y / 40`` when thickness is 0). springscene
+draws the same tube (the numbers of :class:`springscene.view.geometry.HelixTube`:
+analytic tangent and normal of the centre line, one ring of ``sides`` vertices per
+centre-line point).
+
+Two things make a lattice of springs fast:
+
+* all helices of a batch with the same ``coils`` and ``ccw`` (and detail) share one
+  unit template (per vertex: s, sin/cos theta, sin/cos phi); each helix's length,
+  radius, wire and frame are applied by one batched matrix product, and the
+  triangles (fixed while only points move) are tiled once;
+* level of detail: a helix a few pixels across does not need 60 chords a coil and
+  16 sides. The chords and sides are the fewest (of :data:`CHORD_STEPS` and
+  :data:`SIDE_STEPS`) whose polygon departs from the true circle (the sagitta,
+  ``r (1 - cos(pi / n))``) by at most :data:`LOD_PX` pixels, for the centre line's
+  radius and the wire's radius as the nearest helix of the group is seen. Bigger
+  helices (the wiki's spring, about 30 px across) keep VPython's full 60 x 16.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..view.geometry import CHORDS_PER_COIL, TUBE_SIDES
+from . import placement
+
+LOD_PX = 0.1                   # largest sagitta, in pixels, of a helix's polygons
+CHORD_STEPS = (CHORDS_PER_COIL, 48, 40, 32, 24, 20, 16, 12, 8, 6)   # chords per coil
+SIDE_STEPS = (TUBE_SIDES, 14, 12, 10, 8, 6, 4)        # sides of the wire (even: _bounds)
+_TEMPLATES: dict[tuple, "_Template"] = {}
+MAX_TEMPLATES = 64
+
+
+def steps_for(radius_px: float, steps: tuple[int, ...], tolerance: float = None) -> int:
+    """The fewest of ``steps`` (most first) whose polygon of that many sides around a
+    circle of ``radius_px`` pixels stays within ``tolerance`` px (:data:`LOD_PX`)."""
+    tol = LOD_PX if tolerance is None else tolerance
+    best = steps[0]
+    for n in steps:
+        if radius_px * (1 - math.cos(math.pi / n)) <= tol:
+            best = n
+        else:
+            break
+    return best
+
+
+class _Template:
+    """Per-vertex constants of a unit helix of ``coils`` turns, ``chords`` a coil and
+    ``sides`` round the wire; vertex ``ring * sides + side``."""
+
+    def __init__(self, coils: float, ccw: bool, chords: int, sides: int) -> None:
+        n = int(round(coils * chords)) + 1        # VPython allows fractional coils
+        self.k = (1.0 if ccw else -1.0) * 2 * math.pi * coils      # d(theta)/ds
+        s = np.linspace(0.0, 1.0, n)
+        theta = self.k * s
+        phi = 2 * math.pi * np.arange(sides) / sides
+        grid = np.ones((n, sides))
+        self.s = (s[:, None] * grid).ravel()
+        self.sin_t = (np.sin(theta)[:, None] * grid).ravel()
+        self.cos_t = (np.cos(theta)[:, None] * grid).ravel()
+        self.sin_p = (np.sin(phi)[None, :] * grid).ravel()
+        self.cos_p = (np.cos(phi)[None, :] * grid).ravel()
+        self.triangles = _ring_triangles(n, sides)
+
+    @property
+    def size(self) -> int:
+        return len(self.s)
+
+
+def _ring_triangles(n_rings: int, sides: int) -> np.ndarray:
+    """Two triangles (a, b, c), (a, c, d) per quad between consecutive rings."""
+    ring = np.arange(n_rings - 1)[:, None] * sides
+    q = np.arange(sides)[None, :]
+    q1 = (q + 1) % sides
+    a, b, c, d = ring + q, ring + q1, ring + sides + q1, ring + sides + q
+    quads = np.stack([a, b, c, d], axis=-1).reshape(-1, 4)
+    return np.stack([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]], axis=1).reshape(-1, 3)
+
+
+def template(coils: float, ccw: bool, chords: int = CHORDS_PER_COIL,
+             sides: int = TUBE_SIDES) -> _Template:
+    key = (float(coils), bool(ccw), int(chords), int(sides))
+    t = _TEMPLATES.get(key)
+    if t is None:
+        if len(_TEMPLATES) > MAX_TEMPLATES:        # an animated coils
+            _TEMPLATES.clear()
+        t = _TEMPLATES[key] = _Template(*key)
+    return t
+
+
+def place(t: _Template, pos, R, length, radius, wire) -> tuple[np.ndarray, np.ndarray]:
+    """World points and unit normals (M * t.size, 3) of M helices of template ``t``.
+
+    With T the centre line's unit tangent (L, R k cos, -R k sin) / |T| and N its
+    inward normal (0, -sin, -cos), the ring normal is N cos(phi) + (T x N) sin(phi),
+    T x N = (-R k, L cos, -L sin) / |T|; a vertex is the centre line plus
+    ``wire`` times it, in the local frame ``R`` (columns X, Y, Z) from ``pos``.
+    """
+    L, rad, w = (np.asarray(x, dtype=float).reshape(-1, 1) for x in (length, radius, wire))
+    Rk = rad * t.k
+    norm_T = np.sqrt(L * L + Rk * Rk)
+    a, b = L / norm_T, Rk / norm_T                                  # (M, 1)
+    normals = np.empty((len(L), t.size, 3))
+    np.multiply(-b, t.sin_p, out=normals[:, :, 0])
+    normals[:, :, 1] = -t.sin_t * t.cos_p + a * (t.cos_t * t.sin_p)
+    normals[:, :, 2] = -t.cos_t * t.cos_p - a * (t.sin_t * t.sin_p)
+    local = normals * w[:, :, None]
+    local[:, :, 0] += t.s * L
+    local[:, :, 1] += rad * t.sin_t
+    local[:, :, 2] += rad * t.cos_t
+    F = np.swapaxes(np.asarray(R, dtype=float), 1, 2)               # rows X, Y, Z
+    world = np.matmul(local, F)
+    world += np.asarray(pos, dtype=float)[:, None, :]
+    return world.reshape(-1, 3), np.matmul(normals, F).reshape(-1, 3)
+
+
+def helix_arrays(objs) -> dict:
+    """pos, frame, length, radius, wire, coils, ccw and colour of helices of nonzero length."""
+    axis = np.array([o._axis._xyz() for o in objs], dtype=float).reshape(-1, 3)
+    length = np.linalg.norm(axis, axis=1)
+    keep = length > 0
+    objs = [o for o, k in zip(objs, keep) if k]
+    axis, length = axis[keep], length[keep]
+    up = np.array([o._up._xyz() for o in objs], dtype=float).reshape(-1, 3)
+    radius = np.array([o._size.y / 2 for o in objs], dtype=float)
+    thick = np.array([o._thickness or 0.0 for o in objs], dtype=float)
+    return {"pos": np.array([o._pos._xyz() for o in objs], dtype=float).reshape(-1, 3),
+            "R": placement.frames(axis, up) if len(objs) else np.zeros((0, 3, 3)),
+            "length": length, "radius": radius,
+            "wire": np.where(thick > 0, thick / 2, radius / 20),
+            "coils": [float(o._coils) for o in objs], "ccw": [bool(o._ccw) for o in objs],
+            "color": np.array([o._color._xyz() for o in objs], dtype=float).reshape(-1, 3)}
+
+
+def pixels_per_unit(view, points: np.ndarray, nearer: np.ndarray | float = 0.0) -> np.ndarray:
+    """Pixels per world unit at each point's depth before the camera (less ``nearer``)."""
+    fwd = view.focal_point - view.position
+    fwd = fwd / np.linalg.norm(fwd)
+    depth = np.maximum((points - view.position) @ fwd - nearer, view.near)
+    return (view.height / 2) / math.tan(view.fov / 2) / depth
+
+
+def detail(a: dict, idx: np.ndarray, view) -> tuple[int, int]:
+    """(chords per coil, sides) for the helices ``idx``: enough for the nearest of them
+    (each taken at its end nearer the camera, less its radius)."""
+    if view is None:
+        return CHORDS_PER_COIL, TUBE_SIDES
+    pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
+    end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
+    ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
+                     pixels_per_unit(view, end, radius + wire))
+    return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
+            steps_for(float(np.max(wire * ppu)), SIDE_STEPS))
+
+
+def mesh(objs, view=None, triangles: bool = True):
+    """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
+    shape signature of helices, grouped by shape; None when none has a length. With
+    ``view``, each group at its level of detail (:func:`detail`); without, VPython's full
+    60 x 16. ``triangles=False`` leaves them out (None): a batch keeps its cells."""
+    a = helix_arrays(objs)
+    if not len(a["length"]):
+        return None
+    groups: dict[tuple, list[int]] = {}
+    for i, shape in enumerate(zip(a["coils"], a["ccw"])):
+        groups.setdefault(shape, []).append(i)
+    parts, start = [], 0
+    for (coils, ccw), idx in groups.items():
+        idx = np.array(idx)
+        chords, sides = detail(a, idx, view)
+        t = template(coils, ccw, chords, sides)
+        points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
+                                a["radius"][idx], a["wire"][idx])
+        m = len(idx)
+        rgb = np.repeat(np.clip(np.rint(a["color"][idx] * 255), 0, 255).astype(np.uint8),
+                        t.size, axis=0)
+        tris = placement.tile(t.triangles, t.size, m) + start if triangles else None
+        parts.append((points, normals, tris, rgb,
+                      _bounds(points, a["wire"][idx], m, sides, view is None)))
+        parts[-1] += ((coils, ccw, chords, sides, m),)
+        start += len(points)
+    out = [np.concatenate([p[i] for p in parts]) if i != 2 or triangles else None
+           for i in range(5)]
+    return (*out, tuple(p[5] for p in parts))
+
+
+def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
+    """Per-helix bounds (m, 2, 3): of the vertices (``exact``), or, cheaper, of the ring
+    centres (the midpoint of two opposite vertices; ``sides`` is even) widened by the wire."""
+    if exact:
+        per = points.reshape(m, -1, 3)
+        return np.stack([per.min(axis=1), per.max(axis=1)], axis=1)
+    per = points.reshape(m, -1, sides, 3)
+    centres = (per[:, :, 0] + per[:, :, sides // 2]) / 2
+    w = wire[:, None]
+    return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
+
+
+def draw(batch, objs, view, style) -> np.ndarray:
+    """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
+    or their detail change); returns their bounds (M, 2, 3), none when no helix has
+    a length (the batch hidden)."""
+    m = mesh(objs, view, triangles=False)
+    if m is None:
+        batch.hide()
+        return np.zeros((0, 2, 3))
+    points, normals, _, rgb, bounds, signature = m
+    signature = ("helix",) + signature
+    cells = None
+    if signature != batch.signature:
+        cells = placement.vtk_cells(np.concatenate([
+            placement.tile(template(c, w, n, s).triangles, len(template(c, w, n, s).s), k)
+            + start for (c, w, n, s, k), start in zip(signature[1:], _starts(signature[1:]))]))
+    batch.set(points, normals, rgb, cells, signature, style)
+    cull_back_faces(batch, style)
+    return bounds
+
+
+def cull_back_faces(batch, style: dict, view=None, centres=None, radii=None) -> None:
+    """Opaque closed surfaces (spheres, a helix's wire) skip their far side: its
+    triangles face away from the camera and are hidden by the near side anyway, and
+    llvmpipe's render of AtomicSolid takes about half the time (the picture differs
+    in 0.001 % of pixels, by at most 37/255, anti-aliased). Transparent ones keep it.
+    The triangles are counter-clockwise seen from outside. GlowScript culls nothing
+    (WebGLRenderer.js leaves ``gl.CULL_FACE`` off), so with ``centres`` and ``radii``
+    (spheres) nothing is culled unless a camera (``view``) is outside all of them."""
+    if batch.actor is None:
+        return
+    cull = style["opacity"] >= 1
+    if centres is not None:
+        cull = cull and view is not None and bool(np.all(
+            np.linalg.norm(centres - view.position, axis=1) > radii + 2 * view.near))
+    batch.actor.GetProperty().SetBackfaceCulling(bool(cull))
+
+
+def _starts(groups) -> list[int]:
+    sizes = [len(template(c, w, n, s).s) * k for c, w, n, s, k in groups]
+    return list(np.cumsum([0] + sizes[:-1]))
+
+
+__all__ = ["cull_back_faces", "LOD_PX", "CHORD_STEPS", "SIDE_STEPS", "steps_for", "template", "place",
+           "helix_arrays", "pixels_per_unit", "detail", "mesh", "draw"]

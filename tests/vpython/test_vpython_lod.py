@@ -1,0 +1,189 @@
+"""Helices batched and drawn at a level of detail by their size on screen (helix_batch).
+
+VPython's helix (primitives.js ``helix.__update``): ``coils * 60 + 1`` centre-line
+points, a 16-sided tube of radius thickness/2 (size.y/40 when 0). At full detail the
+batched mesh is exactly the single-helix tube (HelixTube's numbers); with a view, a
+small helix gets fewer chords and sides, the fewest whose polygons stay within
+``LOD_PX`` pixels of the true circles.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+import springscene.vpython as vp
+from springscene.view import camera
+from springscene.view.geometry import HelixTube
+from springscene.vpython import draw, helix_batch, placement
+from springscene.vpython.draw import Renderer
+
+
+@pytest.fixture(autouse=True)
+def fresh():
+    vp.reset()
+    yield
+    vp.reset()
+
+
+def _helices():
+    return [vp.helix(pos=vp.vector(1, 2, 3), axis=vp.vector(0.3, -2, 0.5), radius=0.2,
+                     coils=7, thickness=0.05, color=vp.color.orange),
+            vp.helix(pos=vp.vector(-1, 0, 0), axis=vp.vector(1, 0, 0), ccw=False, coils=2.5,
+                     radius=0.5, color=vp.color.cyan),
+            vp.helix(pos=vp.vector(0, 1, 0), axis=vp.vector(0, 3, 0), coils=7, radius=0.1)]
+
+
+def test_full_detail_batch_is_each_helix_tube():
+    """Three helices (two of one shape) in one mesh: each is HelixTube's tube, VPython's
+    60 chords a coil and 16 sides, vertex for vertex."""
+    hs = _helices()
+    points, normals, tris, rgb, bounds, sig = helix_batch.mesh(hs)
+    assert sorted(g[:4] for g in sig) == [(2.5, False, 60, 16), (7.0, True, 60, 16)]
+    got = {}
+    start = 0
+    for coils, ccw, _, _, m in sig:                      # groups in first-seen order
+        n = (int(round(coils * 60)) + 1) * 16
+        got[(coils, ccw)] = [points[start + i * n:start + (i + 1) * n] for i in range(m)]
+        start += m * n
+    for h, key in zip(hs, [(7.0, True), (2.5, False), (7.0, True)]):
+        tube = HelixTube(h.radius, h.thickness, h.coils, h.ccw)
+        R = placement.frames(np.array([h.axis.value]), np.array([h.up.value]))[0]
+        want, want_n = tube.points(h.pos.value, np.array(h.axis.value), R)
+        mine = got[key].pop(0)
+        assert np.allclose(mine, want, atol=1e-12)
+    assert len(tris) == (7 * 60 * 16 * 2) * 2 + 2.5 * 60 * 16 * 2
+    assert tris.max() == len(points) - 1
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1)
+    # bounds at full detail: the vertices' own
+    n7 = (7 * 60 + 1) * 16
+    assert np.allclose(bounds[0], [points[:n7].min(0), points[:n7].max(0)])
+
+
+def test_default_wire_is_a_twentieth_of_the_radius():
+    h = vp.helix(radius=0.4, axis=vp.vector(2, 0, 0))
+    a = helix_batch.helix_arrays([h])
+    assert a["wire"][0] == pytest.approx(0.02)           # size.y / 40
+    h.thickness = 0.1
+    assert helix_batch.helix_arrays([h])["wire"][0] == pytest.approx(0.05)
+
+
+def test_zero_length_helix_is_not_drawn():
+    h = vp.helix(axis=vp.vector(0, 0, 0))
+    assert helix_batch.mesh([h]) is None
+    assert len(helix_batch.mesh([h, vp.helix()])[0]) == (5 * 60 + 1) * 16
+
+
+@pytest.mark.parametrize("radius_px, full", [(1000.0, True), (40.0, False), (2.0, False)])
+def test_steps_keep_the_sagitta_under_the_tolerance(radius_px, full):
+    n = helix_batch.steps_for(radius_px, helix_batch.CHORD_STEPS)
+    assert (n == 60) == full
+    if not full:
+        assert radius_px * (1 - math.cos(math.pi / n)) <= helix_batch.LOD_PX
+        finer = helix_batch.CHORD_STEPS[helix_batch.CHORD_STEPS.index(n) - 1]
+        assert n == helix_batch.CHORD_STEPS[-1] or \
+            radius_px * (1 - math.cos(math.pi / finer)) <= helix_batch.LOD_PX
+
+
+def _view(rng: float, w=900, h=600):
+    return camera.view(np.zeros(3), np.array([0, 0, -1.0]), np.array([0, 1.0, 0]),
+                       math.pi / 3, rng, w, h)
+
+
+def test_detail_follows_the_size_on_screen():
+    """A helix of radius 0.15 and wire 0.025 (AtomicSolid's) seen near, far and very far:
+    the nearer, the finer; close up VPython's full 60 x 16."""
+    h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
+                 thickness=0.05)
+    sig = [helix_batch.mesh([h], _view(rng))[5][0][2:4] for rng in (0.3, 3.0, 300.0)]
+    assert sig[0] == (60, 16)
+    assert sig[1][0] < 60 and sig[1][1] < 16
+    assert sig[2][0] <= sig[1][0] and sig[2][1] <= sig[1][1]
+    assert sig[2] == (helix_batch.CHORD_STEPS[-1], helix_batch.SIDE_STEPS[-1])
+
+
+def test_lod_mesh_stays_near_the_full_one():
+    """At its level of detail each helix's vertices lie on the same tube: every LOD
+    vertex is within the wire's radius of the full-detail centre line, and the bounds
+    still hold the full-detail mesh."""
+    h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0.1, 0), radius=0.15,
+                 thickness=0.05)
+    full = helix_batch.mesh([h])
+    lod = helix_batch.mesh([h], _view(3.0))
+    assert len(lod[0]) < len(full[0]) / 2
+    centre = full[0].reshape(-1, 16, 3).mean(axis=1)
+    d = np.linalg.norm(lod[0][:, None] - centre[None], axis=2).min(axis=1)
+    assert np.all(np.abs(d - 0.025) < 0.025 * 0.05 + 1e-3)
+    lo, hi = lod[4][0]
+    assert np.all(full[0].min(0) >= lo - 1e-9) and np.all(full[0].max(0) <= hi + 1e-9)
+
+
+def test_renderer_draws_a_lattice_of_helices_in_one_batch():
+    """144 helices, one actor; after the first frame (full detail, no camera yet) they
+    are redrawn at the detail for their size, and the picture stays close to full detail."""
+    vp.scene.width, vp.scene.height = 300, 200
+    hs = []
+    for i in range(12):
+        for j in range(12):
+            hs.append(vp.helix(pos=vp.vector(i, j, 0), axis=vp.vector(0.6, 0, 0),
+                               radius=0.15, thickness=0.05, color=vp.color.orange))
+    r = Renderer(vp.scene, antialias=False)
+    first = r.frame()
+    batches = [b for k, b in r._batches.items() if k[0] == "helix"]
+    assert len(batches) == 1 and batches[0].signature[1][:4] == (5.0, True, 60, 16)
+    for h in hs:
+        h.axis = vp.vector(0.6, 0, 0)                     # touched: redrawn
+    second = r.frame()
+    chords, sides, m = batches[0].signature[1][2:]
+    assert m == 144 and (chords, sides) != (60, 16)
+    diff = np.abs(first.astype(int) - second).max(axis=2)
+    assert first.any() and (diff > 24).mean() < 0.02
+    r.close()
+
+
+def _outward(points, normals, tris) -> np.ndarray:
+    """Each triangle's winding normal (counter-clockwise) dotted with its vertices' normal."""
+    a, b, c = points[tris[:, 0]], points[tris[:, 1]], points[tris[:, 2]]
+    face = np.cross(b - a, c - a)
+    return np.einsum("ij,ij->i", face, normals[tris].mean(axis=1))
+
+
+def test_helix_and_sphere_triangles_face_out():
+    """Back faces are culled on them: every triangle must be counter-clockwise from outside."""
+    for view in (None, _view(3.0)):
+        points, normals, tris, *_ = helix_batch.mesh(_helices(), view, triangles=True) \
+            if view is None else helix_batch.mesh(_helices()[:1], view)
+        assert np.all(_outward(points, normals, tris) > 0)
+    for slices in (30, 10):
+        t = draw.template("sphere", slices)
+        ok = _outward(t.points, t.normals, t.triangles)
+        area = np.linalg.norm(np.cross(t.points[t.triangles[:, 1]] - t.points[t.triangles[:, 0]],
+                                       t.points[t.triangles[:, 2]] - t.points[t.triangles[:, 0]]),
+                              axis=1)
+        assert np.all((ok > 0) | (area < 1e-12))          # degenerate pole triangles aside
+
+
+def test_back_faces_culled_only_when_hidden():
+    """Opaque spheres seen from outside and opaque helices: culled. A camera inside a
+    sphere (GlowScript draws its inside) or a transparent one: not culled."""
+    vp.scene.width, vp.scene.height = 200, 150
+    vp.scene.range = 3                                    # no autoscale: the camera stays
+    ball = vp.sphere(radius=0.5)
+    vp.helix(pos=vp.vector(1, 0, 0))
+    r = Renderer(vp.scene, antialias=False)
+    r.frame()
+    ball.pos = vp.vector(0, 0, 0.01)
+    r.frame()
+    culled = {k[0]: b.actor.GetProperty().GetBackfaceCulling() for k, b in r._batches.items()}
+    assert culled == {"sphere": 1, "helix": 1}
+    ball.radius = 100                                     # the camera is now inside it
+    r.frame()
+    ball.pos = vp.vector(0, 0, 0)
+    r.frame()
+    sphere = [b for k, b in r._batches.items() if k[0] == "sphere"][0]
+    assert sphere.actor.GetProperty().GetBackfaceCulling() == 0
+    r.close()
+    style = {"opacity": 0.5}
+    helix_batch.cull_back_faces(sphere, style)           # actor gone: nothing to do
