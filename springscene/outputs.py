@@ -103,6 +103,9 @@ class VideoWriter:
             self._mp4 = None
 
     def write(self, frame: np.ndarray) -> None:
+        if frame.shape[:2] != (self.size[1], self.size[0]):
+            raise ValueError(f"a frame of {frame.shape[1]} x {frame.shape[0]} px in a video of "
+                             f"{self.size[0]} x {self.size[1]}")
         if self._mp4 is not None:
             self._mp4.send(np.ascontiguousarray(frame))
         else:

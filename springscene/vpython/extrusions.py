@@ -427,7 +427,7 @@ def _sweep_spec(args: dict, path: list) -> tuple[Sweep, Caps | None, float]:
     if len(keep) < 2:
         raise AttributeError("An extrusion path must contain more than one distinct point.")
     pts = np.array([path[i]._xyz() for i in keep])
-    up = first_up(np.array(path[1]._xyz()) - np.array(path[0]._xyz()), np.array(up._xyz()))
+    up = first_up(pts[1] - pts[0], np.array(up._xyz()))      # the first distinct step
     d, x, y = path_frames(pts, up, closed)
     plane, sharp = joints(d, closed, smooth, smooth_joints, sharp_joints)
     caps = None if closed else _caps(args, d, plane, colour[keep])

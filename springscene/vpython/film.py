@@ -18,7 +18,7 @@ from .canvas import canvas
 from .draw import Renderer
 from .graph import graphs
 from .graph_images import GraphStrip
-from .page_frame import PAGE_BACKGROUND, PageLayout
+from .page_frame import PAGE_BACKGROUND, PageLayout, fit
 
 __all__ = ["Film", "Printed"]
 
@@ -125,6 +125,12 @@ class Film:
         image = self._canvas_frame() if self.canvas_only else self.page()
         if self.writer is None:
             self.writer = VideoWriter(self.tmp, self.fps, (image.shape[1], image.shape[0]))
+        elif image.shape[:2] != self.writer.size[::-1]:     # a canvas resized mid-run
+            if not any("resized" in n for n in self.notes):
+                self.notes.append(f"the canvas was resized to {image.shape[1]} x "
+                                  f"{image.shape[0]} during the run; the video keeps "
+                                  f"{self.writer.size[0]} x {self.writer.size[1]}")
+            image = fit(image, self.writer.size)
         self.writer.write(image)
         self.frames += 1
         if self.on_frame is not None:

@@ -8,7 +8,9 @@ sans-serif, Liberation Sans (measured: "Spring" in bold is 46 px wide there, 45.
 Liberation Sans, 53.2 in DejaVu Sans). springscene draws with the Liberation Sans it
 ships (:mod:`.label_fonts`, the labels' fonts).
 
-The HTML VPython programs put there is a small subset: ``<b>``/``<strong>``,
+This parser follows the browser's HTML (the page's divs); a label's text follows
+GlowScript's own ``parse_html`` instead (:mod:`.label_layout`), so they stay two. The
+HTML VPython programs put there is a small subset: ``<b>``/``<strong>``,
 ``<i>``/``<em>``, ``<sub>``, ``<sup>``, ``<br>`` and ``\\n`` line breaks, entities; other
 tags are dropped and their text kept. Lines wrap at the page's width (a video cannot
 scroll sideways as the browser does).
@@ -21,7 +23,7 @@ from dataclasses import dataclass
 from html.parser import HTMLParser
 import numpy as np
 
-from .label_fonts import font_file
+from .label_fonts import font_file, pil_font
 
 __all__ = ["FONT_PX", "TEXT_COLOR", "font_path", "render_html", "parse"]
 
@@ -53,11 +55,9 @@ def font_path(bold: bool = False, italic: bool = False) -> str:
     return font_file("arial", bold, italic)
 
 
-@functools.lru_cache(maxsize=32)
 def _font(bold: bool, italic: bool, px: float):
-    from PIL import ImageFont  # noqa: PLC0415  heavy: Pillow
-
-    return ImageFont.truetype(font_path(bold, italic), px)
+    """The labels' Pillow font (raqm kerning, as the browser lays text out)."""
+    return pil_font(font_path(bold, italic), px)
 
 
 class _Parser(HTMLParser):

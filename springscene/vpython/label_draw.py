@@ -67,6 +67,8 @@ def spec(lab, view, width: int, height: int, background) -> Spec | None:
         if not (math.isfinite(col) and math.isfinite(row)):
             return None
         posx, posy = math.floor(col + 0.5), math.floor(row + 0.5)
+    if not all(math.isfinite(v) for v in (posx, posy, xoff, yoff, float(lab._height))):
+        return None                        # a NaN or infinite place: nowhere to draw it
     geo = label_layout.place(lab._text, lab._font, float(lab._height), lab._align,
                              (posx, posy), (xoff, yoff), float(lab._border),
                              label_fonts.width, float(lab._space))

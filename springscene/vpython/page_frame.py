@@ -3,7 +3,9 @@
 VPython lays its page out from top to bottom in the order things appear (vpython/
 glowscript ``lib/glow/canvas.js`` ``__activate``; ``lib/glow/graph.js``): for each canvas,
 when its first object is made, its title, the canvas, then its caption; each graph when
-its first point is plotted. Everything is left-aligned inside the body's 8 px margin,
+its first point is plotted. springscene gives a graph its place when it is made and
+keeps that place blank until its first point (VPython leaves no space until then), so
+that a video whose first frame comes before the first plot has room for the graph. Everything is left-aligned inside the body's 8 px margin,
 on vpython's page colour #f1f2f4 (``ide.css``). A canvas without objects is never
 shown. :class:`PageLayout` draws that page from the canvases' pictures and the graphs'
 pictures; the first frame fixes the video's size (even, for yuv420p), later frames are
@@ -18,7 +20,7 @@ import numpy as np
 
 from .html_text import render_html
 
-__all__ = ["PAGE_BACKGROUND", "MARGIN", "PageLayout", "claim_slot"]
+__all__ = ["PAGE_BACKGROUND", "MARGIN", "PageLayout", "claim_slot", "fit"]
 
 PAGE_BACKGROUND = (241, 242, 244)      # vpython's ide.css: body background #f1f2f4
 MARGIN = 8                             # the browser's default body margin
@@ -33,6 +35,20 @@ def claim_slot(item) -> None:
         item._page_slot = next(_slots)
 
 
+def fit(image: np.ndarray, size: tuple[int, int],
+        background: tuple[int, int, int] = (0, 0, 0)) -> np.ndarray:
+    """``image`` at the video's ``size`` (width, height): padded with ``background`` at the
+    right and bottom, or cut there."""
+    W, H = size
+    if image.shape[:2] == (H, W):
+        return image
+    out = np.empty((H, W, 3), np.uint8)
+    out[:] = background
+    h, w = min(image.shape[0], H), min(image.shape[1], W)
+    out[:h, :w] = image[:h, :w]
+    return out
+
+
 class PageLayout:
     """Stacks titles, canvases, captions and graphs into frames of one size."""
 
@@ -43,7 +59,7 @@ class PageLayout:
 
     @staticmethod
     def order(canvases: list, graphs: list) -> list:
-        """Canvases with objects and graphs with points, in the order they appeared."""
+        """Canvases with objects and the graphs made so far, in the order they appeared."""
         shown = [c for c in canvases if c._objects and getattr(c, "_visible", True)]
         shown += [g for g in graphs if getattr(g, "_page_slot", None) is not None]
         return sorted(shown, key=lambda x: getattr(x, "_page_slot", 0) or 0)

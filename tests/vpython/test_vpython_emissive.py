@@ -6,7 +6,7 @@ draws ``color * min(1, 1.1*(1.5*N.V)^0.4)``, N.V the cosine between the surface 
 the direction to the eye at that point. springscene/vpython/materials.py
 (:func:`shade_emissive`) writes that rule into VTK's fragment shader.
 
-tests/baselines/emissive/ holds real VPython's own pictures (realvpy_shot.py,
+tests/baselines/emissive/ holds real VPython's own pictures (benchmarks/fidelity/realvpython.py's method,
 ``canvas.screenshot``) of the program below, on black and on white. Before the rule
 springscene drew emissive objects flat (VTK unlit: ambient + diffuse, 1.2x the colour):
 mean dE00 6.6 (black) and 5.6 (white) over the objects' pixels against real VPython,

@@ -1,7 +1,7 @@
 """Transparent objects (opacity < 1) coloured as real VPython colours them.
 
 The pictures in tests/baselines/opacity/ are real VPython 7.6.5's own (GlowScript 3.2, WebGL
-on SwiftShader in headless Chromium: /work/shared/tools/realvpy_shot.py, ``canvas.screenshot``)
+on SwiftShader in headless Chromium: as benchmarks/fidelity/realvpython.py takes them, ``canvas.screenshot``)
 of the programs below, run unchanged. springscene draws the same programs and is held to them
 with CIEDE2000 colour differences: at chosen points (the shadow side of a half-transparent
 sphere, its bright rim, the inner faces of a half-transparent box, a back-facing triangle) and

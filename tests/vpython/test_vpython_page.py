@@ -180,3 +180,25 @@ def test_page_that_grows_is_cut_with_a_note(tmp_path):
                     on_frame=lambda i, img: frames.append(img))
     assert len({f.shape for f in frames}) == 1
     assert any("the page grew" in n for n in r.notes)
+
+
+def test_canvas_only_resized_mid_run_keeps_the_video_whole(tmp_path):
+    """--canvas-only: the video keeps the first size (every frame written, a note)."""
+    prog = write(tmp_path, """
+        from vpython import *
+        scene.width, scene.height = 200, 120
+        box()
+        for i in range(3):
+            rate(10)
+        scene.width, scene.height = 300, 200
+        for i in range(3):
+            rate(10)
+    """)
+    import imageio_ffmpeg
+
+    r = run_program(prog, tmp_path / "r.mp4", page=False, canvas_only=True, fps=10)
+    reader = imageio_ffmpeg.read_frames(str(tmp_path / "r.mp4"))
+    assert next(reader)["size"] == (200, 120)
+    assert sum(1 for _ in reader) == r.frames >= 6
+    reader.close()
+    assert any("resized" in n for n in r.notes)
