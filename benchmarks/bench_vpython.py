@@ -19,6 +19,7 @@
    ``$SPRINGSCENE_DEMOS`` (default /work/demos); missing ones are skipped.
 
 Rounds are interleaved and the best of each is kept.
+Where AtomicSolid's frame goes, part by part: ``benchmarks/bench_render_cost.py``.
 """
 
 from __future__ import annotations
@@ -109,7 +110,8 @@ def batched(lod: bool = True) -> float:
 
 def wiki_program(out: Path) -> float:
     start = time.perf_counter()
-    run_program(ROOT / "examples" / "wiki_spring.py", out, duration=SECONDS, page=False)
+    run_program(ROOT / "examples" / "wiki_spring.py", out, duration=SECONDS, page=False,
+                canvas_only=True)
     return time.perf_counter() - start
 
 
@@ -145,7 +147,8 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> floa
     random.seed(1)
     try:
         run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
-                    page=False, on_frame=lambda i, image: times.append(time.perf_counter()))
+                    page=False, canvas_only=True,
+                    on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
         helix_batch.LOD_PX, draw.SPHERE_LOD, helix_batch.cull_back_faces = saved
     steady = times[3:]
@@ -153,19 +156,23 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> floa
 
 
 def demos(tmp: Path) -> None:
+    """VPython's demos where they are (not in this repository), and always
+    examples/lattice.py at AtomicSolid's 900 x 600: a 4 x 4 x 4 crystal on 144 helices."""
     folder = Path(os.environ.get("SPRINGSCENE_DEMOS", "/work/demos"))
-    found = [(name, size) for name, size in DEMOS if (folder / f"{name}.py").is_file()]
+    found = [(folder / f"{name}.py", size) for name, size in DEMOS
+             if (folder / f"{name}.py").is_file()]
     if not found:
-        print(f"VPython demos: none in {folder} (set SPRINGSCENE_DEMOS); skipped")
-        return
-    print(f"VPython demos to MP4, steady frames/s (best of {DEMO_ROUNDS}), "
+        print(f"VPython demos: none in {folder} (set SPRINGSCENE_DEMOS); only the lattice")
+    found.append((ROOT / "examples" / "lattice.py", (900, 600)))
+    print(f"VPython programs to MP4 (--canvas-only), steady frames/s (best of {DEMO_ROUNDS}), "
           "level of detail against full detail:")
-    for name, size in found:
+    for path, size in found:
+        name = path.stem
         best = {}
         for _ in range(DEMO_ROUNDS):
             for aa in (False, True):
                 for lod in (False, True):
-                    fps = demo_fps(folder / f"{name}.py", size, aa, lod, tmp)
+                    fps = demo_fps(path, size, aa, lod, tmp)
                     best[aa, lod] = max(best.get((aa, lod), 0.0), fps)
         where = f" at {size[0]} x {size[1]}" if size else ""
         print(f"  {name}{where}:")

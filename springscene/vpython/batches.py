@@ -25,7 +25,6 @@ from .placement import vtk_cells
 from . import textures
 from .texture_shading import BUMP_SAMPLER, bump_frame, shade_textured
 
-LINE_WIDTH = 2            # px: a curve of radius 0 (VPython draws a thin line)
 
 
 class Batch:
@@ -36,10 +35,10 @@ class Batch:
     vertex_alpha = False  # some vertex's own opacity (RGBA colours) is below 1
     lit = False          # a surface lit by the lights (shaded by GlowScript's rules)
 
-    def __init__(self, plotter, key: tuple, mode: str, texture=None) -> None:
+    def __init__(self, plotter, key: tuple, texture=None) -> None:
         import pyvista as pv  # noqa: PLC0415  heavy: pyvista
 
-        self.key, self.mode = key, mode
+        self.key = key
         self.signature = None
         self.mesh = pv.PolyData()
         self.plotter = plotter
@@ -58,13 +57,7 @@ class Batch:
         if signature == self.signature and self.actor is not None:
             self._update(points, normals, colors, uv)
             return
-        pv = self.pv
-        if self.mode == "lines":
-            mesh = pv.PolyData(points, lines=cells)
-        elif self.mode == "points":
-            mesh = pv.PolyData(points)
-        else:
-            mesh = pv.PolyData(points, faces=cells)
+        mesh = self.pv.PolyData(points, faces=cells)    # every kind is triangles
         if normals is not None:
             mesh.point_data["Normals"] = normals
             mesh.GetPointData().SetActiveNormals("Normals")
@@ -78,7 +71,6 @@ class Batch:
             self.mesh = mesh
             self.actor = self.plotter.add_mesh(mesh, scalars="rgb", rgb=True,
                                                smooth_shading=False, show_scalar_bar=False,
-                                               render_points_as_spheres=self.mode == "points",
                                                texture=self.texture)
             self._style(style)
         self.signature = signature
@@ -107,19 +99,11 @@ class Batch:
         prop.SetSpecularPower(max(100 * shininess, 1.0))
         prop.SetOpacity(style["opacity"])
         self.opacity = style["opacity"]
-        self.lit = self.mode == "triangles" and not style["emissive"]
-        prop.LightingOn()                  # on again after an emissive curve or points
+        self.lit = not style["emissive"]
+        prop.LightingOn()                  # emissive too: VTK's unlit shader has no normals
         self._shade()
-        if style["emissive"] and self.mode == "triangles":
+        if style["emissive"]:
             shade_emissive(self.actor)     # GlowScript's glow, dimmed towards the outline
-        elif style["emissive"]:
-            prop.LightingOff()
-        if self.mode == "lines":
-            prop.SetLineWidth(LINE_WIDTH)
-            prop.LightingOff()
-        if self.mode == "points":
-            prop.SetPointSize(style["point_px"])
-            prop.LightingOff()
 
     @property
     def translucent(self) -> bool:
@@ -154,8 +138,8 @@ class TexturedBatch(Batch):
     plain actor (GlowScript draws those in the object's colour, untextured)."""
 
     def __init__(self, plotter, key: tuple, texture) -> None:
-        super().__init__(plotter, key, "triangles", texture)
-        self.bare = Batch(plotter, key, "triangles")
+        super().__init__(plotter, key, texture)
+        self.bare = Batch(plotter, key)
         spec = key[-1]                     # the batch's TextureSpec (draw.Renderer._key)
         bump = textures.bump_of(spec) if isinstance(spec, textures.TextureSpec) else None
         self.bump = None if bump is None else vtk_texture(bump)
@@ -227,4 +211,4 @@ def vtk_texture(image: np.ndarray):
     return texture
 
 
-__all__ = ["Batch", "TexturedBatch", "TextureCache", "vtk_texture", "LINE_WIDTH"]
+__all__ = ["Batch", "TexturedBatch", "TextureCache", "vtk_texture"]

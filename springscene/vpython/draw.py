@@ -186,6 +186,7 @@ class Renderer:
         self.width, self.height = int(cv.width), int(cv.height)
         pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
         pl.renderer.AutomaticLightCreationOff()     # scene.lights = [] means no light
+        helix_batch.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
         self._transparency = materials.Transparency(pl, MULTI_SAMPLES if antialias else 0)
         self.plotter = pl
         self._ambient = None
@@ -283,7 +284,7 @@ class Renderer:
     def _new_batch(self, key: tuple) -> _Batch:
         spec = key[-1] if key[0] in ("textured", "triangle") else None
         if spec is None:
-            return _Batch(self.plotter, key, self._mode(key))
+            return _Batch(self.plotter, key)
         texture = self._textures.get(spec.source, textures.load(spec))
         return TexturedBatch(self.plotter, key, texture)
 
@@ -293,10 +294,6 @@ class Renderer:
         if obj._kind == "points":
             return ("sphere-points" if obj._size_units == "world" else "points", *look)
         return ("tube" if obj._radius > 0 else "lines", *look)
-
-    @staticmethod
-    def _mode(key: tuple) -> str:
-        return "triangles"        # points and thin curves too: spheres and tubes
 
     def _style(self, key: tuple) -> dict:
         ambient = float(np.mean(self.cv.ambient.value))

@@ -20,6 +20,8 @@ from springscene.view.geometry import HelixTube
 from springscene.vpython import draw, helix_batch, placement
 from springscene.vpython.draw import Renderer
 
+from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
+
 
 @pytest.fixture(autouse=True)
 def fresh():
@@ -97,7 +99,7 @@ def test_detail_follows_the_size_on_screen():
     the nearer, the finer; close up VPython's full 60 x 16."""
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
                  thickness=0.05)
-    sig = [helix_batch.mesh([h], _view(rng))[5][0][2:4] for rng in (0.3, 3.0, 300.0)]
+    sig = [helix_batch.mesh([h], _view(rng))[5][0][2:4] for rng in (0.3, 4.0, 300.0)]
     assert sig[0] == (60, 16)
     assert sig[1][0] < 60 and sig[1][1] < 16
     assert sig[2][0] <= sig[1][0] and sig[2][1] <= sig[1][1]
@@ -111,7 +113,7 @@ def test_lod_mesh_stays_near_the_full_one():
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0.1, 0), radius=0.15,
                  thickness=0.05)
     full = helix_batch.mesh([h])
-    lod = helix_batch.mesh([h], _view(3.0))
+    lod = helix_batch.mesh([h], _view(4.0))
     assert len(lod[0]) < len(full[0]) / 2
     centre = full[0].reshape(-1, 16, 3).mean(axis=1)
     d = np.linalg.norm(lod[0][:, None] - centre[None], axis=2).min(axis=1)
@@ -166,18 +168,28 @@ def test_helix_and_sphere_triangles_face_out():
 
 
 def test_back_faces_culled_only_when_hidden():
-    """Opaque spheres seen from outside and opaque helices: culled. A camera inside a
-    sphere (GlowScript draws its inside) or a transparent one: not culled."""
+    """Opaque spheres seen from outside: culled. Opaque helices: culled when drawn with
+    reduced detail (thin on screen), not at full detail (their open wire ends show, as
+    in GlowScript, which culls nothing). A camera inside a sphere (GlowScript draws its
+    inside) or a transparent one: not culled."""
     vp.scene.width, vp.scene.height = 200, 150
     vp.scene.range = 3                                    # no autoscale: the camera stays
     ball = vp.sphere(radius=0.5)
-    vp.helix(pos=vp.vector(1, 0, 0))
+    spring = vp.helix(pos=vp.vector(1, 0, 0))
     r = Renderer(vp.scene, antialias=False)
     r.frame()
     ball.pos = vp.vector(0, 0, 0.01)
     r.frame()
     culled = {k[0]: b.actor.GetProperty().GetBackfaceCulling() for k, b in r._batches.items()}
-    assert culled == {"sphere": 1, "helix": 1}
+    assert culled == {"sphere": 1, "helix": 0}
+    vp.scene.range = 40                                   # the helix a few pixels long
+    r.frame()
+    spring.pos = vp.vector(1, 0, 0.01)
+    r.frame()
+    helix = [b for k, b in r._batches.items() if k[0] == "helix"][0]
+    assert helix.signature[1][2] < helix_batch.CHORDS_PER_COIL
+    assert helix.actor.GetProperty().GetBackfaceCulling() == 1
+    vp.scene.range = 3
     ball.radius = 100                                     # the camera is now inside it
     r.frame()
     ball.pos = vp.vector(0, 0, 0)
@@ -187,3 +199,87 @@ def test_back_faces_culled_only_when_hidden():
     r.close()
     style = {"opacity": 0.5}
     helix_batch.cull_back_faces(sphere, style)           # actor gone: nothing to do
+
+
+def test_wire_sides_take_a_share_of_the_tolerance():
+    """The wire's sides are held to LOD_PX * SIDE_SHARE (fewer sides move the specular
+    highlight, not only the outline); the coil's chords to LOD_PX."""
+    h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
+                 thickness=0.05)
+    view = _view(4.0)
+    a = helix_batch.helix_arrays([h])
+    chords, sides = helix_batch.detail(a, np.array([0]), view)
+    ppu = helix_batch.pixels_per_unit(view, np.array([[0.2, 0, 0]]), 0.175)[0]
+    wire_px, coil_px = 0.025 * ppu, 0.15 * ppu
+    tol = helix_batch.LOD_PX * helix_batch.SIDE_SHARE
+    assert helix_batch.SIDE_SHARE < 1
+    assert wire_px * (1 - math.cos(math.pi / sides)) <= tol
+    coarser = helix_batch.SIDE_STEPS[helix_batch.SIDE_STEPS.index(sides) + 1]
+    assert wire_px * (1 - math.cos(math.pi / coarser)) > tol
+    assert (chords, sides) == (helix_batch.steps_for(coil_px, helix_batch.CHORD_STEPS),
+                               helix_batch.steps_for(wire_px, helix_batch.SIDE_STEPS, tol))
+
+
+def _lattice(n: int) -> list:
+    """AtomicSolid's look: atoms of radius 0.3 a unit apart, springs of radius 0.15 and
+    thickness 0.05 between them."""
+    vp.scene.center = vp.vector(1, 1, 1) * (n - 1) / 2
+    springs = []
+    steps = (vp.vector(1, 0, 0), vp.vector(0, 1, 0), vp.vector(0, 0, 1))
+    for x in range(n):
+        for y in range(n):
+            for z in range(n):
+                p = vp.vector(x, y, z)
+                vp.sphere(pos=p, radius=0.3, color=vp.vector(0, 0.58, 0.69))
+                springs += [vp.helix(pos=p + 0.15 * d, axis=0.7 * d, radius=0.15,
+                                     thickness=0.05, color=vp.color.orange)
+                            for d in steps if max((p + d).value) < n]
+    return springs
+
+
+@pytest.mark.parametrize("size", [(450, 300), (300, 200)])
+def test_lattice_at_its_detail_is_within_the_image_tolerance(size, monkeypatch):
+    """AtomicSolid's springs, a few pixels thick, drawn at their level of detail: within
+    the project's image tolerance of VPython's full 60 x 16 (at most 0.05 % of pixels
+    off by more than 24/255, mean under 0.2), drafted, where the wire's sides take the
+    full LOD_PX (14 or 12 sides) measured 0.10 %."""
+
+    def pictures():
+        vp.reset()
+        vp.scene.width, vp.scene.height = size
+        springs = _lattice(2)
+        r = Renderer(vp.scene, antialias=False)
+        full = r.frame()                                  # no camera yet: full detail
+        for s in springs:
+            s.axis = s.axis                               # touched: redrawn for the view
+        lod = r.frame()
+        sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
+        r.close()
+        return full, lod, sig
+
+    full, lod, sig = pictures()
+    assert sig[1][2] < 60 and sig[1][4] == 12
+    bad, mean = compare(lod, full)
+    assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (bad, mean, sig)
+    monkeypatch.setattr(helix_batch, "SIDE_SHARE", 1.0)   # the sagitta alone: outside it
+    full, lod, sig = pictures()
+    assert sig[1][3] < 16 and compare(lod, full)[0] > MAX_BAD_FRACTION
+
+
+def test_no_frustum_culler_and_the_same_picture():
+    """The renderer drops VTK's frustum culler (bounds over every cell at every frame);
+    a scene with objects in and out of view draws the same with it put back."""
+    from vtkmodules.vtkRenderingCore import vtkFrustumCoverageCuller  # noqa: PLC0415  heavy: vtk
+
+    vp.scene.width, vp.scene.height = 200, 150
+    vp.scene.range = 2
+    vp.sphere(pos=vp.vector(0.5, 0, 0), radius=0.5, color=vp.color.red)
+    vp.helix(pos=vp.vector(-1.5, -0.5, 0), axis=vp.vector(1, 1, 0), radius=0.3)
+    vp.box(pos=vp.vector(40, 0, 0))                        # out of view
+    r = Renderer(vp.scene, antialias=False)
+    assert r.plotter.renderer.GetCullers().GetNumberOfItems() == 0
+    without = r.frame()
+    r.plotter.renderer.GetCullers().AddItem(vtkFrustumCoverageCuller())
+    with_culler = r.frame()
+    r.close()
+    assert without.any() and np.array_equal(without, with_culler)
