@@ -184,6 +184,7 @@ class Renderer:
 
         self.cv = cv
         self.width, self.height = int(cv.width), int(cv.height)
+        self.antialias = antialias
         pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
         pl.renderer.AutomaticLightCreationOff()     # scene.lights = [] means no light
         helix_batch.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
@@ -323,7 +324,8 @@ class Renderer:
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
         elif kind == "helix":             # one vectorised mesh, detail by screen size
-            self._bounds[key] = helix_batch.draw(batch, objs, self.view, style)
+            self._bounds[key] = helix_batch.draw(batch, objs, self.view, style,
+                                                 full_chords=self.antialias)
         else:
             meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)

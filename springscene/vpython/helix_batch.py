@@ -154,20 +154,23 @@ def pixels_per_unit(view, points: np.ndarray, nearer: np.ndarray | float = 0.0) 
     return (view.height / 2) / math.tan(view.fov / 2) / depth
 
 
-def detail(a: dict, idx: np.ndarray, view) -> tuple[int, int]:
+def detail(a: dict, idx: np.ndarray, view, full_chords: bool = False) -> tuple[int, int]:
     """(chords per coil, sides) for the helices ``idx``: enough for the nearest of them
-    (each taken at its end nearer the camera, less its radius)."""
+    (each taken at its end nearer the camera, less its radius). ``full_chords`` keeps
+    VPython's 60 chords a coil: anti-aliased, fewer chords put AtomicSolid's springs
+    outside the image tolerance of full detail (40 x 16: 0.091 % of pixels off by more
+    than 24; 48 x 16: 0.064 %; the tolerance is 0.05 %), drafted they stay within it."""
     if view is None:
         return CHORDS_PER_COIL, TUBE_SIDES
     pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
     end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
     ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
                      pixels_per_unit(view, end, radius + wire))
-    return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
+    return (CHORDS_PER_COIL if full_chords else steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
             steps_for(float(np.max(wire * ppu)), SIDE_STEPS, LOD_PX * SIDE_SHARE))
 
 
-def mesh(objs, view=None, triangles: bool = True):
+def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False):
     """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
     shape signature of helices, grouped by shape; None when none has a length. With
     ``view``, each group at its level of detail (:func:`detail`); without, VPython's full
@@ -181,7 +184,7 @@ def mesh(objs, view=None, triangles: bool = True):
     parts, start = [], 0
     for (coils, ccw), idx in groups.items():
         idx = np.array(idx)
-        chords, sides = detail(a, idx, view)
+        chords, sides = detail(a, idx, view, full_chords)
         t = template(coils, ccw, chords, sides)
         points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
                                 a["radius"][idx], a["wire"][idx])
@@ -210,11 +213,11 @@ def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
     return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
 
 
-def draw(batch, objs, view, style) -> np.ndarray:
+def draw(batch, objs, view, style, full_chords: bool = False) -> np.ndarray:
     """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
     or their detail change); returns their bounds (M, 2, 3), none when no helix has
     a length (the batch hidden)."""
-    m = mesh(objs, view, triangles=False)
+    m = mesh(objs, view, triangles=False, full_chords=full_chords)
     if m is None:
         batch.hide()
         return np.zeros((0, 2, 3))
@@ -226,12 +229,26 @@ def draw(batch, objs, view, style) -> np.ndarray:
             placement.tile(template(c, w, n, s).triangles, len(template(c, w, n, s).s), k)
             + start for (c, w, n, s, k), start in zip(signature[1:], _starts(signature[1:]))]))
     batch.set(points, normals, rgb, cells, signature, style)
-    # GlowScript culls nothing, and a wire drawn at full detail is big enough on screen
-    # for its open ends to show (the fidelity scene's hanging helix: IoU 0.973 culled,
-    # 0.981 not); a wire drawn with fewer sides is thin on screen and its back faces go
-    reduced = all(n < CHORDS_PER_COIL or sd < TUBE_SIDES for _, _, n, sd, _ in signature[1:])
-    cull_back_faces(batch, style if reduced else {**style, "opacity": 0.0})
+    # GlowScript culls nothing: a thick wire's open ends show its inside (the fidelity
+    # scene's hanging helix: IoU 0.973 culled, 0.981 not); a wire a few pixels thick
+    # hides its far side (AtomicSolid: 0.002 % of pixels differ), so that goes
+    cull_back_faces(batch, style if _thin(objs, view) else {**style, "opacity": 0.0})
     return bounds
+
+
+THIN_WIRE_PX = 4.0     # px: a wire radius on screen below which its back faces are culled
+                       # (AtomicSolid at 900 x 600: 3.4 px, culled: 0.002 % of pixels differ)
+
+
+def _thin(objs, view) -> bool:
+    """Every wire under :data:`THIN_WIRE_PX` in radius on screen."""
+    if view is None:
+        return False
+    a = helix_arrays(objs)
+    end = a["pos"] + a["R"][:, :, 0] * a["length"][:, None]
+    ppu = np.maximum(pixels_per_unit(view, a["pos"], a["radius"] + a["wire"]),
+                     pixels_per_unit(view, end, a["radius"] + a["wire"]))
+    return bool(np.max(a["wire"] * ppu) < THIN_WIRE_PX)
 
 
 def cull_back_faces(batch, style: dict, view=None, centres=None, radii=None) -> None:

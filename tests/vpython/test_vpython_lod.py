@@ -168,9 +168,9 @@ def test_helix_and_sphere_triangles_face_out():
 
 
 def test_back_faces_culled_only_when_hidden():
-    """Opaque spheres seen from outside: culled. Opaque helices: culled when drawn with
-    reduced detail (thin on screen), not at full detail (their open wire ends show, as
-    in GlowScript, which culls nothing). A camera inside a sphere (GlowScript draws its
+    """Opaque spheres seen from outside: culled. Opaque helices: culled when their wire
+    is thin on screen (under THIN_WIRE_PX in radius), not when it is thick (its open
+    ends show its inside, as in GlowScript, which culls nothing). A camera inside a sphere (GlowScript draws its
     inside) or a transparent one: not culled."""
     vp.scene.width, vp.scene.height = 200, 150
     vp.scene.range = 3                                    # no autoscale: the camera stays
@@ -237,8 +237,9 @@ def _lattice(n: int) -> list:
     return springs
 
 
+@pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 @pytest.mark.parametrize("size", [(450, 300), (300, 200)])
-def test_lattice_at_its_detail_is_within_the_image_tolerance(size, monkeypatch):
+def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, monkeypatch):
     """AtomicSolid's springs, a few pixels thick, drawn at their level of detail: within
     the project's image tolerance of VPython's full 60 x 16 (at most 0.05 % of pixels
     off by more than 24/255, mean under 0.2), drafted, where the wire's sides take the
@@ -248,7 +249,7 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, monkeypatch):
         vp.reset()
         vp.scene.width, vp.scene.height = size
         springs = _lattice(2)
-        r = Renderer(vp.scene, antialias=False)
+        r = Renderer(vp.scene, antialias=antialias)    # anti-aliased: 60 chords a coil
         full = r.frame()                                  # no camera yet: full detail
         for s in springs:
             s.axis = s.axis                               # touched: redrawn for the view
@@ -258,7 +259,7 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, monkeypatch):
         return full, lod, sig
 
     full, lod, sig = pictures()
-    assert sig[1][2] < 60 and sig[1][4] == 12
+    assert (sig[1][2] == 60) == antialias and sig[1][4] == 12
     bad, mean = compare(lod, full)
     assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (bad, mean, sig)
     monkeypatch.setattr(helix_batch, "SIDE_SHARE", 1.0)   # the sagitta alone: outside it
