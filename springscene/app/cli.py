@@ -109,7 +109,8 @@ def _add_picture_commands(sub) -> None:
 def _add_vpython_command(sub) -> None:
     s = sub.add_parser("vpython", help="run a VPython program headless: a video (or still) "
                        "and the page VPython would show")
-    s.add_argument("program", help="a VPython 7 program (from vpython import *)")
+    s.add_argument("program", help="a VPython program: VPython 7 (from vpython import *), "
+                   "VPython 6 (from visual import *) or Web VPython (GlowScript header)")
     s.add_argument("--out", required=True, help="video.mp4, video.gif or still.png")
     length = s.add_mutually_exclusive_group()
     length.add_argument("--duration", type=float,
