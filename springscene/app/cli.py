@@ -7,8 +7,10 @@ Everything a command does is a call into the ``springscene`` library.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import warnings
+from pathlib import Path
 
 from .. import config, jobs
 from ..errors import ProgramError, UserError
@@ -127,11 +129,29 @@ def _add_vpython_command(sub) -> None:
     _renders(s)
 
 
+def _check_out_is_not_input(args: argparse.Namespace) -> None:
+    """``--out`` naming the config or program itself (saved under the output's extension)
+    would overwrite the user's file: refused."""
+    source = getattr(args, "config", None) or getattr(args, "program", None)
+    out = getattr(args, "out", None)
+    if not source or not out:
+        return
+    src, dst = Path(source), Path(out)
+    try:
+        same = dst.exists() and src.exists() and os.path.samefile(src, dst)
+    except OSError:
+        same = False
+    if same or src.resolve() == dst.resolve():
+        raise UserError(f"--out {out}: is the input {source} itself; writing there would "
+                        "overwrite it (choose another name)")
+
+
 def _run(args: argparse.Namespace) -> int:
     if args.command == "info":
         for key, value in info(args.backend).items():
             print(f"{key}: {value}")
         return 0
+    _check_out_is_not_input(args)
     if args.command == "vpython":
         return _vpython(args)
     cfg = config.load(args.config)

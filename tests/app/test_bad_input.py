@@ -96,6 +96,29 @@ def test_unwritable_output(tmp_path):
     assert "Traceback" not in proc.stderr
 
 
+@pytest.mark.parametrize("command, name, extra", [
+    ("simulate", "run.csv", ()),
+    ("still", "run.png", ("--time", "0")),
+    ("render", "run.mp4", ("--duration", "0.1")),
+    ("sweep", "run.csv", ("--omega", "10:12:3")),
+    ("vpython", "prog.png", ()),
+])
+def test_out_naming_the_input_is_refused(tmp_path, command, name, extra):
+    """A config or program saved under the output's extension must not be overwritten:
+    one line, exit 2, the file untouched (also through a link)."""
+    source = tmp_path / name
+    text = ("from vpython import *\nsphere()\n" if command == "vpython" else GOOD)
+    source.write_text(text)
+    link = tmp_path / ("link" + source.suffix)
+    link.symlink_to(source)
+    for out in (source, link):
+        proc = run_cli(command, source, "--out", out, *extra)
+        assert proc.returncode == 2, proc.stderr
+        lines = proc.stderr.strip().splitlines()
+        assert len(lines) == 1 and "is the input" in lines[0] and "Traceback" not in proc.stderr
+        assert source.read_text() == text
+
+
 def test_osmesa_missing_is_one_line(monkeypatch):
     """A backend whose library is absent is refused before VTK can crash."""
     from springscene.view import backend
