@@ -158,7 +158,10 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
                     canvas_only)
 
         def capture(cv, name: str) -> None:
-            target = out.parent / Path(name).name
+            name = Path(name).name
+            if name.startswith("."):     # capture("") would be a hidden ".png"
+                name = f"{out.stem}-capture{name}"
+            target = out.parent / name
             write_png(target, film.renderer(cv).frame())
             images.append(target)
 

@@ -202,3 +202,24 @@ def test_canvas_only_resized_mid_run_keeps_the_video_whole(tmp_path):
     assert sum(1 for _ in reader) == r.frames >= 6
     reader.close()
     assert any("resized" in n for n in r.notes)
+
+
+def test_scene_capture_saves_the_canvas_alone_beside_the_output(tmp_path):
+    """scene.capture("name") is the canvas at its own size (no page around it), as
+    VPython's; capture("") gets a name instead of a hidden ".png"."""
+    prog = write(tmp_path, """
+        from vpython import *
+        scene.width, scene.height = 200, 120
+        scene.title = "not in the capture"
+        box(color=color.red)
+        scene.capture("snap")
+        scene.capture("")
+    """)
+    out = tmp_path / "out"
+    out.mkdir()
+    r = run_program(prog, out / "run.png", page=False)
+    snap = iio.imread(out / "snap.png")
+    assert snap.shape[:2] == (120, 200)
+    assert (out / "run-capture.png").exists()
+    assert sorted(p.name for p in out.iterdir()) == ["run-capture.png", "run.png", "snap.png"]
+    assert sorted(p.name for p in r.images) == ["run-capture.png", "snap.png"]
