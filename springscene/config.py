@@ -318,6 +318,9 @@ def load(path: str | Path) -> Config:
         raise UserError(f"{path}: not UTF-8 text") from None
     except tomllib.TOMLDecodeError as exc:
         raise UserError(f"{path}: invalid TOML: {exc}") from None
+    except RecursionError:      # tomllib recurses once per level of nested tables
+        raise UserError(f"{path}: values nested too deeply (a config needs two levels)") \
+            from None
     return from_dict(data, source=str(path))
 
 

@@ -227,6 +227,12 @@ def _vpython(args: argparse.Namespace) -> int:
     return 0
 
 
+def one_line(message: str) -> str:
+    """``message`` on one line: a newline or other control character that came from the
+    user's input (a TOML section name, a file name) is shown escaped, as Python writes it."""
+    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in message)
+
+
 def main(argv: list[str] | None = None) -> int:
     # a numerical blow-up is reported as one line (physics.step checks); numpy's overflow
     # warnings on the way there would only add lines
@@ -235,7 +241,7 @@ def main(argv: list[str] | None = None) -> int:
     try:
         return _run(args)
     except UserError as exc:
-        print(f"springscene: error: {exc}", file=sys.stderr)
+        print(f"springscene: error: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_BAD_INPUT
     except ProgramError as exc:
         print(exc, file=sys.stderr)           # the program's own traceback

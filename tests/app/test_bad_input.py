@@ -119,6 +119,28 @@ def test_out_naming_the_input_is_refused(tmp_path, command, name, extra):
         assert source.read_text() == text
 
 
+def test_a_newline_in_a_section_name_stays_one_line(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(GOOD + '\n["a\\nb\\u0007c"]\nx = 1\n')
+    proc = run_cli("simulate", bad, "--out", tmp_path / "x.csv")
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and "unknown section [a\\nb\\x07c]" in lines[0], proc.stderr
+    assert not (tmp_path / "x.csv").exists()
+
+
+def test_deeply_nested_values_are_one_line(tmp_path):
+    value = "1"
+    for _ in range(3000):
+        value = "{a = " + value + "}"
+    bad = tmp_path / "deep.toml"
+    bad.write_text(GOOD + "\n[extra]\nx = " + value + "\n")
+    proc = run_cli("simulate", bad, "--out", tmp_path / "x.csv")
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and "nested too deeply" in lines[0], proc.stderr
+
+
 def test_osmesa_missing_is_one_line(monkeypatch):
     """A backend whose library is absent is refused before VTK can crash."""
     from springscene.view import backend
