@@ -18,6 +18,9 @@ from .errors import UserError
 VIDEO_FORMATS = (".mp4", ".gif")
 
 
+NAME_MAX = 255       # bytes in a file name on Linux's file systems
+
+
 def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out") -> Path:
     """Return ``path`` if its suffix is one of ``formats`` and its folder is writable."""
     if not str(path).strip():
@@ -26,6 +29,10 @@ def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out"
     if path.suffix.lower() not in formats:
         raise UserError(f"{flag} {path}: unknown output format {path.suffix or '(none)'!r} "
                         f"(use {', '.join(formats)})")
+    longest = NAME_MAX - 10 - len(path.suffix)      # the temporary ".NAME.XXXXXXXX.SUFFIX"
+    if len(os.fsencode(path.name)) > longest:
+        raise UserError(f"{flag} {path.name[:40]}...: the file name is "
+                        f"{len(os.fsencode(path.name))} bytes; the limit is {longest}")
     parent = path.parent if str(path.parent) else Path(".")
     if not parent.is_dir():
         raise UserError(f"{flag} {path}: folder {parent} does not exist")

@@ -159,8 +159,13 @@ def amplification(name: str, omega, gamma, h: float) -> np.ndarray:
 
 
 def growth(name: str, omega, gamma, h: float) -> np.ndarray:
-    """Largest factor by which one step multiplies a linear mode (its spectral radius)."""
-    return np.abs(np.linalg.eigvals(amplification(name, omega, gamma, h))).max(axis=-1)
+    """Largest factor by which one step multiplies a linear mode (its spectral radius);
+    infinite where a step overflows (a huge ``h``)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        a = amplification(name, omega, gamma, h)
+    finite = np.isfinite(a).all(axis=(-2, -1))
+    rho = np.abs(np.linalg.eigvals(np.where(finite[..., None, None], a, 0.0))).max(axis=-1)
+    return np.where(finite, rho, np.inf)
 
 
 def stable(name: str, omega, gamma, h: float) -> bool:
@@ -186,6 +191,11 @@ def largest_stable_step(name: str, omega, gamma, h_hint: float) -> float:
     lo, hi = 0.0, max(h_hint, 1e-300)
     while stable(name, omega, gamma, hi) and hi < 1e6:
         lo, hi = hi, hi * 2
+    while lo == 0.0 and hi > 1e-300:       # a hint far too large: come down by halves
+        if stable(name, omega, gamma, hi / 2):
+            lo = hi / 2
+        else:
+            hi /= 2
     for _ in range(60):
         mid = (lo + hi) / 2
         lo, hi = (mid, hi) if stable(name, omega, gamma, mid) else (lo, mid)
@@ -213,6 +223,7 @@ def stability_problem(name: str, omega, gamma, dt: float, what: str) -> str | No
     w, gm = float(omega.max()), float(gamma.max())
     h_max = largest_stable_step(name, omega, gamma, dt)
     damped = f", b/2m = {gm:.3g} /s" if gm > 0 else ""
+    advice = (f"use dt <= {suggest_step(h_max):g} s" if h_max > 0 else
+              "no time step is stable: the values are too large")
     return (f"dt = {dt:g} s is unstable for {name} ({what} = {w:.4g} rad/s, "
-            f"omega*dt = {w * dt:.3g}{damped}; {name} {INTEGRATORS[name].rule}); "
-            f"use dt <= {suggest_step(h_max):g} s")
+            f"omega*dt = {w * dt:.3g}{damped}; {name} {INTEGRATORS[name].rule}); {advice}")

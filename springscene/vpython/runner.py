@@ -33,6 +33,7 @@ FORMATS = VIDEO_FORMATS + (".png",)
 DEFAULT_FPS = 50
 DEFAULT_DURATION = 10.0          # program seconds, when neither --duration nor --frames
 MAX_FRAMES = 360_000             # two hours at 50 frames/s
+MAX_FPS = 1000                   # frames per program second
 OVERLAYS = ("graph",)
 _PACKAGE = str(Path(__file__).resolve().parent.parent)
 
@@ -66,6 +67,8 @@ def _check_program(program) -> Path:
 def _frame_budget(duration: float | None, frames: int | None, fps: int) -> tuple[int, str]:
     if not isinstance(fps, int) or fps <= 0:
         raise UserError(f"--fps {fps}: must be a whole number above 0")
+    if fps > MAX_FPS:
+        raise UserError(f"--fps {fps}: the limit is {MAX_FPS} frames per program second")
     if frames is not None:
         if frames <= 0:
             raise UserError(f"--frames {frames}: must be at least 1")
@@ -76,6 +79,9 @@ def _frame_budget(duration: float | None, frames: int | None, fps: int) -> tuple
         duration = DEFAULT_DURATION
     elif not duration > 0 or duration != duration or duration == float("inf"):
         raise UserError(f"--duration {duration:g}: must be a number of seconds above 0")
+    if duration * fps > MAX_FRAMES:
+        raise UserError(f"--duration {duration:g} at --fps {fps} is {duration * fps:,.0f} "
+                        f"frames; the limit is {MAX_FRAMES:,}")
     n = int(round(duration * fps))
     if n > MAX_FRAMES:
         raise UserError(f"--duration {duration:g} at --fps {fps} is {n:,} frames; "
@@ -157,14 +163,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
         film = Film(None if still else tmp, fps, overlays, backend, antialias, on_frame,
                     canvas_only)
 
-        def capture(cv, name: str) -> None:
-            name = Path(name).name
-            if name.startswith("."):     # capture("") would be a hidden ".png"
-                name = f"{out.stem}-capture{name}"
-            target = out.parent / name
-            write_png(target, film.renderer(cv).frame())
-            images.append(target)
-
+        capture = _capturer(out, film, images)
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(fps, budget, (lambda: None) if still else film.take)
         # at each of VPython's renders: attached trails and arrows move, autoscale widens
@@ -195,6 +194,20 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
         result.notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
                             "(the default; use --duration or --frames)")
     return result
+
+
+def _capturer(out: Path, film: Film, images: list[Path]):
+    """``scene.capture(name)``: the canvas saved beside ``out`` (``capture("")``, which
+    would be a hidden ".png", as ``<out>-capture.png``)."""
+    def capture(cv, name: str) -> None:
+        name = Path(name).name
+        if name.startswith("."):
+            name = f"{out.stem}-capture{name}"
+        target = out.parent / name
+        write_png(target, film.renderer(cv).frame())
+        images.append(target)
+
+    return capture
 
 
 def _check_request(program, out, duration: float | None, frames: int | None, fps: int,

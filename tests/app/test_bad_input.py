@@ -4,7 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from conftest import WIKI, run_cli
+from conftest import ROOT, WIKI, run_cli
+
+EXAMPLES = ROOT / "examples"
 
 GOOD = WIKI.read_text()
 
@@ -34,6 +36,8 @@ BAD_CONFIGS = [
     ('color = "red"', 'color = "octarine"', "[ball] color unknown colour"),
     ("width = 900", "width = true", "[scene] width must be a whole number"),
     ("k = 15.0", "k = 15.0 15", "invalid TOML"),
+    ("k = 15.0", "k = 1e308", "no time step is stable"),
+    ("dt = 0.01", "dt = 1e300", "use dt <= 0.05 s"),
     ("width = 900", "width = 40000", "[scene] width must be at most 8192 pixels"),
     ("thickness = 0.003", "thickness = -0.003", "[spring] thickness must be >= 0"),
 ]
@@ -68,6 +72,12 @@ def test_bad_config(tmp_path, old, new, message):
     (["render", WIKI, "--duration", "1e12", "--out", "{tmp}/v.mp4"], "the limit is"),
     (["still", WIKI, "--time", "1e9", "--out", "{tmp}/a.png"], "--time 1e+09 is 1e+11 steps"),
     (["render", WIKI, "--fps", "60", "--out", "{tmp}/v.gif"], "--fps 60: a GIF plays at most 50"),
+    (["simulate", WIKI, "--dt", "1e308", "--out", "{tmp}/t.csv"], "use dt <= 0.05 s"),
+    (["simulate", WIKI, "--out", "{tmp}/" + "b" * 250 + ".csv"], "the limit is 241"),
+    (["vpython", EXAMPLES / "projectile.py", "--duration", "1e308", "--out", "{tmp}/v.mp4"],
+     "the limit is 360,000"),
+    (["vpython", EXAMPLES / "projectile.py", "--fps", "10" * 10, "--out", "{tmp}/v.mp4"],
+     "the limit is 1000 frames per program second"),
 ])
 def test_bad_flags(tmp_path, args, message):
     args = [str(a).replace("{tmp}", str(tmp_path)) for a in args]
