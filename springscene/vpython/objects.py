@@ -23,6 +23,20 @@ from .checks import _vec
 from .curves import curve, points
 from .vector import is_lenient, vector
 
+
+def _turned(other: vector, old: vector, new: vector) -> vector | None:
+    """``other`` (an object's up or axis) turned as ``old`` turned into ``new``, VPython's
+    rule for both ``adjust_up`` and ``adjust_axis``: None (left as it is) when ``other``
+    is square to ``new`` or the turn is negligible; reversed for a half turn."""
+    if new.dot(other) == 0:
+        return None
+    angle = old.diff_angle(new)
+    if angle <= 1e-6:
+        return None
+    if abs(angle - math.pi) < 1e-6:
+        return -other
+    return other.rotate(angle=angle, axis=old.cross(new))
+
 class _PosShortcut:
     """VPython 6's ``obj.x``/``.y``/``.z``: ``obj.pos.x``... in a VPython 6 program; in
     any other program a plain attribute of the program's own (VPython 7 has none)."""
@@ -258,14 +272,8 @@ class standard(_Base):
             return
         if self._oldaxis is not None:
             old, self._oldaxis = self._oldaxis, None
-        if new.dot(self._up) == 0:
-            return
-        angle = old.diff_angle(new)
-        if angle > 1e-6:
-            if abs(angle - math.pi) < 1e-6:
-                up = -self._up
-            else:
-                up = self._up.rotate(angle=angle, axis=old.cross(new))
+        up = _turned(self._up, old, new)
+        if up is not None:
             up._on_change = self._touch
             self._up = up
 
@@ -285,14 +293,10 @@ class standard(_Base):
 
     def _adjust_axis(self, old: vector, new: vector) -> None:
         """VPython's ``adjust_axis``: turn ``axis`` with ``up`` unless they are already square."""
-        if new.mag2 == 0 or old.mag2 == 0 or new.dot(self._axis) == 0:
+        if new.mag2 == 0 or old.mag2 == 0:
             return
-        angle = old.diff_angle(new)
-        if angle > 1e-6:
-            if abs(angle - math.pi) < 1e-6:
-                axis = -self._axis
-            else:
-                axis = self._axis.rotate(angle=angle, axis=old.cross(new))
+        axis = _turned(self._axis, old, new)
+        if axis is not None:
             axis._on_change = self._on_axis_change
             self._axis = axis
 

@@ -25,6 +25,30 @@ def object_rotate(objaxis: vector, objup: vector, angle: float, axis: vector) ->
     _turn(objup, angle, axis)
 
 
+def _follow(old: vector, new: vector, other: vector, saved, copy_saved: bool):
+    """VPython's rule behind :func:`adjust_up` and :func:`adjust_axis`: ``other`` turns as
+    ``old`` turns into ``new`` unless they are square; ``old`` becomes ``new``. A zero
+    ``new`` saves ``old`` instead (returned); the saved one then stands in for ``old``,
+    its components copied in (``adjust_up``) or the vector itself (``adjust_axis``)."""
+    if abs(new._x) + abs(new._y) + abs(new._z) == 0:
+        return old if saved is None else saved
+    if saved is not None:
+        if copy_saved:
+            old._x, old._y, old._z = saved._x, saved._y, saved._z
+        else:
+            old = saved
+        saved = None
+    if new.dot(other) != 0:
+        angle = old.diff_angle(new)
+        if angle > 1e-6:
+            if abs(angle - pi) < 1e-6:
+                other._x, other._y, other._z = -other._x, -other._y, -other._z
+            else:
+                _turn(other, angle, old.cross(new))
+    old._x, old._y, old._z = new._x, new._y, new._z
+    return saved
+
+
 def adjust_up(oldaxis: vector, newaxis: vector, up: vector, save_oldaxis):
     """VPython's update of ``up`` when an object's axis changes from ``oldaxis``
     to ``newaxis``: ``up`` turns with the axis unless they are perpendicular.
@@ -32,50 +56,10 @@ def adjust_up(oldaxis: vector, newaxis: vector, up: vector, save_oldaxis):
     Writes ``up`` and ``oldaxis`` (set to ``newaxis``) in place, without
     notifying; returns the saved axis to restore after a zero axis, or None.
     """
-    if abs(newaxis._x) + abs(newaxis._y) + abs(newaxis._z) == 0:
-        if save_oldaxis is None:
-            save_oldaxis = oldaxis
-        return save_oldaxis
-    if save_oldaxis is not None:
-        oldaxis._x = save_oldaxis._x
-        oldaxis._y = save_oldaxis._y
-        oldaxis._z = save_oldaxis._z
-        save_oldaxis = None
-    if newaxis.dot(up) != 0:
-        angle = oldaxis.diff_angle(newaxis)
-        if angle > 1e-6:
-            if abs(angle - pi) < 1e-6:
-                up._x = -up._x
-                up._y = -up._y
-                up._z = -up._z
-            else:
-                _turn(up, angle, oldaxis.cross(newaxis))
-    oldaxis._x = newaxis._x
-    oldaxis._y = newaxis._y
-    oldaxis._z = newaxis._z
-    return save_oldaxis
+    return _follow(oldaxis, newaxis, up, save_oldaxis, copy_saved=True)
 
 
 def adjust_axis(oldup: vector, newup: vector, axis: vector, save_oldup):
     """VPython's update of ``axis`` when an object's up changes (the mirror of
     :func:`adjust_up`); writes in place without notifying."""
-    if abs(newup._x) + abs(newup._y) + abs(newup._z) == 0:
-        if save_oldup is None:
-            save_oldup = oldup
-        return save_oldup
-    if save_oldup is not None:
-        oldup = save_oldup      # as VPython: the saved vector stands in for oldup
-        save_oldup = None
-    if newup.dot(axis) != 0:
-        angle = oldup.diff_angle(newup)
-        if angle > 1e-6:
-            if abs(angle - pi) < 1e-6:
-                axis._x = -axis._x
-                axis._y = -axis._y
-                axis._z = -axis._z
-            else:
-                _turn(axis, angle, oldup.cross(newup))
-    oldup._x = newup._x
-    oldup._y = newup._y
-    oldup._z = newup._z
-    return save_oldup
+    return _follow(oldup, newup, axis, save_oldup, copy_saved=False)
