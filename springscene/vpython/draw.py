@@ -19,9 +19,7 @@ canvas (:mod:`.page_frame`), not in it.
 
 from __future__ import annotations
 
-import html
 import math
-import re
 from collections import defaultdict
 
 import numpy as np
@@ -31,23 +29,15 @@ from ..view.scene import MULTI_SAMPLES, apply_view, grab
 from . import (autoscale, frames, label_draw, materials, placement, point_draw, polygons, shapes,
                textured, textures)
 from . import helix_batch
-from .thinning import curve_bounds as _curve_bounds
 from .batches import Batch, TextureCache, TexturedBatch
 
-# kinds drawn from one template scaled by size: (template, anchored at one end)
-TEMPLATES = {"sphere": (shapes.sphere, False), "box": (shapes.box, False),
-             "cylinder": (shapes.cylinder, True), "cone": (shapes.cone, True),
-             "pyramid": (shapes.pyramid, True)}
+# kinds drawn from one template scaled by size (a cylinder's, cone's and pyramid's
+# template starts at its pos, a sphere's and box's is centred on it)
+TEMPLATES = {"sphere": shapes.sphere, "box": shapes.box, "cylinder": shapes.cylinder,
+             "cone": shapes.cone, "pyramid": shapes.pyramid}
 # level of detail: (slices, smallest on-screen radius in px that gets them)
 SPHERE_LOD = ((shapes.SPHERE_SLICES, 24.0), (20, 12.0), (14, 6.0), (10, 0.0))
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
-_TAGS = re.compile(r"<[^>]*>")
-
-
-def plain_text(markup: str) -> str:
-    """The text of an HTML title: tags dropped, entities decoded, lines stripped."""
-    text = _TAGS.sub("", re.sub(r"<br\s*/?>", "\n", markup, flags=re.I))
-    return "\n".join(line.strip() for line in html.unescape(text).splitlines()).strip()
 
 
 def _rgb(colors: np.ndarray) -> np.ndarray:
@@ -67,7 +57,7 @@ def template(kind: str, slices: int | None = None) -> placement.Mesh:
     """The unit mesh of a template kind (a sphere of ``slices``), made once."""
     key = (kind, slices)
     if key not in _TEMPLATES:
-        _TEMPLATES[key] = shapes.sphere(slices) if slices else TEMPLATES[kind][0]()
+        _TEMPLATES[key] = shapes.sphere(slices) if slices else TEMPLATES[kind]()
     return _TEMPLATES[key]
 
 
@@ -195,7 +185,6 @@ class Renderer:
         self._label_specs: list = []
         self._lights_sig = None
         self._background = None
-        self._bounds: dict[tuple, np.ndarray] = {}
         self._textures = TextureCache()
         self.view: camera.View | None = None
         self._pixels = None
@@ -231,7 +220,6 @@ class Renderer:
             groups[self._key(obj)].append(obj)
         for key in [k for k in self._batches if k not in groups]:   # e.g. a faded opacity
             self._batches.pop(key).remove()
-            self._bounds.pop(key, None)
         for key, objs in groups.items():
             batch = self._batches.get(key)
             if batch is None:
@@ -242,7 +230,6 @@ class Renderer:
                 batch.show()
                 continue
             if key[0] in SCREEN_THINNED:    # drawn once the camera is placed, for its view
-                self._bounds[key] = _curve_bounds(objs, key[0])
                 batch.objs, batch.view_key = objs, "to draw"
             else:
                 self._draw(batch, key, objs)
@@ -320,18 +307,15 @@ class Renderer:
             a = textured.arrays(key[1], objs, key[-1])
             batch.set_parts(a["points"], a["normals"], a["rgb"], a["uv"], a["triangles"],
                             a["covered"], a["signature"], style)
-            self._bounds[key] = a["bounds"]
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
         elif kind == "helix":             # one vectorised mesh, detail by screen size
-            self._bounds[key] = helix_batch.draw(batch, objs, self.view, style,
-                                                 full_chords=self.antialias)
+            helix_batch.draw(batch, objs, self.view, style, full_chords=self.antialias)
         else:
             meshes = [m for m in (_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, meshes, style)
 
     def _draw_templates(self, batch, key, objs, style) -> None:
-        anchored = TEMPLATES[key[0]][1]
         pos, R, size, color = _frames(objs)
         slices = self._sphere_slices(pos, size) if key[0] == "sphere" else None
         template_ = template(key[0], slices)
@@ -344,11 +328,6 @@ class Renderer:
         batch.set(points, normals, colors, cells, signature, style)
         if key[0] == "sphere":
             helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
-        # bounds: the object's oriented box
-        half = np.abs(R) @ (size[:, :, None] / 2)
-        centre = pos + (R[:, :, 0] * size[:, :1] / 2 if anchored else 0)
-        half = half[:, :, 0]
-        self._bounds[key] = np.stack([centre - half, centre + half], axis=1)
 
     def _draw_polygons(self, batch, key, objs, style) -> None:
         """Triangles and quads: each vertex's own position, normal, colour and opacity."""
@@ -360,7 +339,6 @@ class Renderer:
         else:
             cells = None if signature == batch.signature else placement.vtk_cells(triangles)
             batch.set(points, normals, rgba, cells, signature, style)
-        self._bounds[key] = np.stack([points, points], axis=1)
 
     def _sphere_slices(self, pos: np.ndarray, size: np.ndarray) -> int:
         """Level of detail for a batch of spheres: enough for the largest on screen."""
@@ -377,7 +355,6 @@ class Renderer:
     def _draw_meshes(self, batch, key, meshes, style) -> None:
         if not meshes:
             batch.hide()
-            self._bounds.pop(key, None)
             return
         offsets = np.cumsum([0] + [len(m[0]) for m in meshes])
         points = np.concatenate([m[0] for m in meshes])
@@ -390,7 +367,6 @@ class Renderer:
             cells = placement.vtk_cells(np.concatenate([m[2] + off
                                                      for m, off in zip(meshes, offsets)]))
         batch.set(points, normals, colors, cells, signature, style)
-        self._bounds[key] = np.array([[m[0].min(axis=0), m[0].max(axis=0)] for m in meshes])
 
     def _draw_points(self, batch, key, objs, style) -> None:
         """Points as spheres and curves as tubes (:mod:`.point_draw`); pixel-sized points and

@@ -170,9 +170,11 @@ def detail(a: dict, idx: np.ndarray, view, full_chords: bool = False) -> tuple[i
             steps_for(float(np.max(wire * ppu)), SIDE_STEPS, LOD_PX * SIDE_SHARE))
 
 
-def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False):
+def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False,
+         bounds: bool = True):
     """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
-    shape signature of helices, grouped by shape; None when none has a length. With
+    shape signature of helices, grouped by shape (bounds zero with ``bounds=False``);
+    None when none has a length. With
     ``view``, each group at its level of detail (:func:`detail`); without, VPython's full
     60 x 16. ``triangles=False`` leaves them out (None): a batch keeps its cells."""
     a = helix_arrays(objs)
@@ -193,7 +195,8 @@ def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False):
                         t.size, axis=0)
         tris = placement.tile(t.triangles, t.size, m) + start if triangles else None
         parts.append((points, normals, tris, rgb,
-                      _bounds(points, a["wire"][idx], m, sides, view is None)))
+                      _bounds(points, a["wire"][idx], m, sides, view is None) if bounds
+                      else np.zeros((m, 2, 3))))
         parts[-1] += ((coils, ccw, chords, sides, m),)
         start += len(points)
     out = [np.concatenate([p[i] for p in parts]) if i != 2 or triangles else None
@@ -213,15 +216,15 @@ def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
     return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
 
 
-def draw(batch, objs, view, style, full_chords: bool = False) -> np.ndarray:
+def draw(batch, objs, view, style, full_chords: bool = False) -> None:
     """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
-    or their detail change); returns their bounds (M, 2, 3), none when no helix has
-    a length (the batch hidden)."""
-    m = mesh(objs, view, triangles=False, full_chords=full_chords)
+    or their detail change); the batch hidden when no helix has a length. Autoscale
+    bounds helices by VPython's rule (:mod:`.autoscale`), so no bounds are made here."""
+    m = mesh(objs, view, triangles=False, full_chords=full_chords, bounds=False)
     if m is None:
         batch.hide()
-        return np.zeros((0, 2, 3))
-    points, normals, _, rgb, bounds, signature = m
+        return
+    points, normals, _, rgb, _, signature = m
     signature = ("helix",) + signature
     cells = None
     if signature != batch.signature:
@@ -233,7 +236,6 @@ def draw(batch, objs, view, style, full_chords: bool = False) -> np.ndarray:
     # scene's hanging helix: IoU 0.973 culled, 0.981 not); a wire a few pixels thick
     # hides its far side (AtomicSolid: 0.002 % of pixels differ), so that goes
     cull_back_faces(batch, style if _thin(objs, view) else {**style, "opacity": 0.0})
-    return bounds
 
 
 THIN_WIRE_PX = 4.0     # px: a wire radius on screen below which its back faces are culled

@@ -60,8 +60,7 @@ def arrays(kind: str, objs: list, spec: TextureSpec) -> dict:
     """Everything a textured batch draws, for objects of one kind sharing ``spec``.
 
     Keys: ``points``, ``normals``, ``triangles``, ``rgb`` (uint8), ``uv``,
-    ``covered`` (per triangle: textured), ``bounds`` ((M, 2, 3) per object) and
-    ``signature`` (the topology).
+    ``covered`` (per triangle: textured) and ``signature`` (the topology).
     """
     if kind in ("ring", "compound"):
         parts = [_own_mesh(obj) for obj in objs]
@@ -73,7 +72,6 @@ def arrays(kind: str, objs: list, spec: TextureSpec) -> dict:
         triangles = np.concatenate([m.triangles + off for m, off in zip(meshes, offsets)])
         template_uv = np.concatenate([m.uv for m in meshes])
         vertex_parts = np.concatenate([shapes.texture_parts(m, kind) for m in meshes])
-        bounds = np.array([[p[1].min(axis=0), p[1].max(axis=0)] for p in parts])
         signature = (kind, tuple(len(m.points) for m in meshes))
     else:
         t = _template(kind)
@@ -84,15 +82,13 @@ def arrays(kind: str, objs: list, spec: TextureSpec) -> dict:
         triangles = placement.tile(t.triangles, n, M)
         template_uv = np.tile(t.uv, (M, 1))
         vertex_parts = np.tile(shapes.texture_parts(t, kind), M)
-        bounds = points.reshape(M, n, 3)
-        bounds = np.stack([bounds.min(axis=1), bounds.max(axis=1)], axis=1)
         signature = (kind, M)
     textured = _textured_vertices(vertex_parts, spec)
     if not spec.covers_all:
         colors = np.where(textured[:, None], 1.0, colors)
     return {"points": points, "normals": normals, "triangles": triangles, "rgb": _rgb(colors),
             "uv": textures.transform_uv(template_uv, spec),
-            "covered": textured[triangles].all(axis=1), "bounds": bounds,
+            "covered": textured[triangles].all(axis=1),
             "signature": signature}
 
 

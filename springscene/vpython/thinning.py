@@ -2,9 +2,8 @@
 so a thin line (or tube) of thousands of points is thinned on screen before drawing.
 
 :func:`thin_line` drops the points closer than ``LINE_MIN_SEGMENT_PX`` along the line
-on screen; :func:`curve_bounds` gives the curves' bounds from their points before they
-are drawn (the renderer draws them once the camera is placed). Autoscale does not use
-these: it bounds objects by VPython's own rule (:mod:`.autoscale`).
+on screen (the renderer draws thin curves once the camera is placed). Autoscale bounds
+them by VPython's own rule (:mod:`.autoscale`).
 """
 
 from __future__ import annotations
@@ -12,18 +11,6 @@ from __future__ import annotations
 import numpy as np
 
 LINE_MIN_SEGMENT_PX = 1.5  # px: shorter segments of a thin line are merged
-
-
-def curve_bounds(objs, kind: str) -> np.ndarray:
-    """Bounds (n, 2, 3) of curves from their points (a tube's widened by its radius),
-    before they are drawn."""
-    found = []
-    for o in objs:
-        p, _, rad = o._arrays()
-        if len(p) >= 2:
-            pad = float(rad.max()) if kind == "tube" else 0.0
-            found.append([p.min(axis=0) - pad, p.max(axis=0) + pad])
-    return np.array(found) if found else np.zeros((0, 2, 3))
 
 
 def thin_line(chunk, view, min_px: float = LINE_MIN_SEGMENT_PX):
