@@ -81,8 +81,10 @@ class Batch:
         if normals is not None:
             self.mesh.point_data["Normals"][:] = normals
             self.mesh.GetPointData().GetNormals().Modified()
-        self.mesh.point_data["rgb"][:] = colors
-        self.mesh.GetPointData().GetArray("rgb").Modified()
+        rgb = self.mesh.point_data["rgb"]
+        if not np.array_equal(rgb, colors):      # unchanged colours are not uploaded again
+            rgb[:] = colors
+            self.mesh.GetPointData().GetArray("rgb").Modified()
         if uv is not None:
             tcoords = self.mesh.GetPointData().GetTCoords()
             self.mesh.active_texture_coordinates[:] = uv
