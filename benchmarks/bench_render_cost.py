@@ -135,7 +135,7 @@ def sphere_slices(r, vp) -> tuple[float, float]:
     for name, b in batches.items():
         b.actor.SetVisibility(name == "sphere")
     at30 = _best(win.Render)
-    saved, draw.SPHERE_LOD = draw.SPHERE_LOD, ((10, 0.0),)
+    saved, draw.SPHERE_STEPS = draw.SPHERE_STEPS, (10,)
     try:
         _touch(vp)
         r.sync()
@@ -143,7 +143,7 @@ def sphere_slices(r, vp) -> tuple[float, float]:
             b.actor.SetVisibility(name == "sphere")
         return at30, _best(win.Render)
     finally:
-        draw.SPHERE_LOD = saved
+        draw.SPHERE_STEPS = saved
 
 
 def main() -> None:

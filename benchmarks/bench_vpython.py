@@ -88,9 +88,9 @@ def batched(lod: bool = True) -> float:
     from springscene.vpython import draw
     from springscene.vpython.draw import Renderer
 
-    saved = draw.SPHERE_LOD
+    saved = draw.SPHERE_STEPS
     if not lod:
-        draw.SPHERE_LOD = ((30, 0.0),)
+        draw.SPHERE_STEPS = (30,)
 
     vp.reset()
     balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
@@ -104,7 +104,7 @@ def batched(lod: bool = True) -> float:
         r.frame()
     seconds = time.perf_counter() - start
     r.close()
-    draw.SPHERE_LOD = saved
+    draw.SPHERE_STEPS = saved
     return seconds
 
 
@@ -139,9 +139,9 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> floa
                           f"scene.width = {size[0]}; scene.height = {size[1]}", 1)
     prog = tmp / program.name
     prog.write_text(src)
-    saved = helix_batch.LOD_PX, draw.SPHERE_LOD, helix_batch.cull_back_faces
+    saved = helix_batch.LOD_PX, draw.SPHERE_STEPS, helix_batch.cull_back_faces
     if not lod:
-        helix_batch.LOD_PX, draw.SPHERE_LOD = 0.0, ((30, 0.0),)
+        helix_batch.LOD_PX, draw.SPHERE_STEPS = 0.0, (30,)
         helix_batch.cull_back_faces = lambda *args: None
     times: list[float] = []
     random.seed(1)
@@ -150,7 +150,7 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> floa
                     page=False, canvas_only=True,
                     on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
-        helix_batch.LOD_PX, draw.SPHERE_LOD, helix_batch.cull_back_faces = saved
+        helix_batch.LOD_PX, draw.SPHERE_STEPS, helix_batch.cull_back_faces = saved
     steady = times[3:]
     return (len(steady) - 1) / (steady[-1] - steady[0])
 

@@ -21,11 +21,15 @@ Two things make a lattice of springs fast:
   helices (the wiki's spring, about 30 px across) keep VPython's full 60 x 16.
   The wire's sides get half that tolerance (:data:`SIDE_SHARE`): fewer sides move
   the specular highlight along the wire (the normals are interpolated between
-  fewer directions), which the sagitta does not count. Measured on AtomicSolid at
-  900 x 600 (wire about 3 px, coil about 20 px in radius) against full detail, % of
-  pixels off by more than 24/255 (draft / 4x MSAA): 40 chords x 14 sides 0.136 /
-  0.30, 60 x 12 0.27 (MSAA), 40 x 16 0.034 / 0.091, 48 x 16 0.024 / 0.064: the
-  sides, not the chords, cost the picture.
+  fewer directions), which the sagitta does not count. :data:`LOD_PX` is what keeps
+  drafted pictures within the project's image tolerance of full detail (at most
+  0.05 % of pixels off by more than 24/255), measured at the first frame, % of pixels
+  off, LOD_PX 0.1, 0.05, 0.03: the lattice example (640 x 400) 0.27, 0.06, 0.026;
+  AtomicSolid at 900 x 600 0.085, 0.025, 0. So 0.03 px, and AtomicSolid's springs
+  (about 20 px in coil radius) keep VPython's 60 chords and 16 sides. Helices a few
+  pixels across drafted at their detail still flip whole pixels where an edge moved a
+  few hundredths of a pixel across a pixel's centre (0.13 % of a lattice of 144 springs
+  4 px in coil radius). Anti-aliased pictures are drawn at full detail (:func:`detail`).
 """
 
 from __future__ import annotations
@@ -37,7 +41,7 @@ import numpy as np
 from ..view.geometry import CHORDS_PER_COIL, TUBE_SIDES
 from . import placement
 
-LOD_PX = 0.1                   # largest sagitta, in pixels, of a helix's polygons
+LOD_PX = 0.03                  # largest sagitta, in pixels, of a helix's polygons
 SIDE_SHARE = 0.5               # the wire's sides: this share of LOD_PX
 CHORD_STEPS = (CHORDS_PER_COIL, 48, 40, 32, 24, 20, 16, 12, 8, 6)   # chords per coil
 SIDE_STEPS = (TUBE_SIDES, 14, 12, 10, 8, 6, 4)        # sides of the wire (even: _bounds)
@@ -179,23 +183,24 @@ def pixels_per_unit(view, points: np.ndarray, nearer: np.ndarray | float = 0.0) 
     return (view.height / 2) / math.tan(view.fov / 2) / depth
 
 
-def detail(a: dict, idx: np.ndarray, view, full_chords: bool = False) -> tuple[int, int]:
+def detail(a: dict, idx: np.ndarray, view, full: bool = False) -> tuple[int, int]:
     """(chords per coil, sides) for the helices ``idx``: enough for the nearest of them
-    (each taken at its end nearer the camera, less its radius). ``full_chords`` keeps
-    VPython's 60 chords a coil: anti-aliased, fewer chords put AtomicSolid's springs
-    outside the image tolerance of full detail (40 x 16: 0.091 % of pixels off by more
-    than 24; 48 x 16: 0.064 %; the tolerance is 0.05 %), drafted they stay within it."""
-    if view is None:
+    (each taken at its end nearer the camera, less its radius). ``full`` keeps VPython's
+    60 x 16 (anti-aliased pictures: fewer chords or sides moved the highlights of
+    AtomicSolid's springs, and of smaller ones, outside the image tolerance of full
+    detail: 40 x 16 0.091 % of pixels off by more than 24/255, 60 x 10 on a wire under a
+    pixel 0.085 %; the tolerance is 0.05 %)."""
+    if view is None or full:
         return CHORDS_PER_COIL, TUBE_SIDES
     pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
     end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
     ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
                      pixels_per_unit(view, end, radius + wire))
-    return (CHORDS_PER_COIL if full_chords else steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
+    return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
             steps_for(float(np.max(wire * ppu)), SIDE_STEPS, LOD_PX * SIDE_SHARE))
 
 
-def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False,
+def mesh(objs, view=None, triangles: bool = True, full: bool = False,
          bounds: bool = True, arrays: dict | None = None):
     """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
     shape signature of helices, grouped by shape (bounds zero with ``bounds=False``);
@@ -212,7 +217,7 @@ def mesh(objs, view=None, triangles: bool = True, full_chords: bool = False,
     parts, start = [], 0
     for (coils, ccw), idx in groups.items():
         idx = np.array(idx)
-        chords, sides = detail(a, idx, view, full_chords)
+        chords, sides = detail(a, idx, view, full)
         t = template(coils, ccw, chords, sides)
         points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
                                 a["radius"][idx], a["wire"][idx])
@@ -241,12 +246,12 @@ def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
     return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
 
 
-def draw(batch, objs, view, style, full_chords: bool = False) -> None:
+def draw(batch, objs, view, style, full: bool = False) -> None:
     """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
     or their detail change); the batch hidden when no helix has a length. Autoscale
     bounds helices by VPython's rule (:mod:`.autoscale`), so no bounds are made here."""
     a = helix_arrays(objs)
-    m = mesh(objs, view, triangles=False, full_chords=full_chords, bounds=False, arrays=a)
+    m = mesh(objs, view, triangles=False, full=full, bounds=False, arrays=a)
     if m is None:
         batch.hide()
         return
@@ -262,6 +267,19 @@ def draw(batch, objs, view, style, full_chords: bool = False) -> None:
     # scene's hanging helix: IoU 0.973 culled, 0.981 not); a wire a few pixels thick
     # hides its far side (AtomicSolid: 0.002 % of pixels differ), so that goes
     cull_back_faces(batch, style if _thin(a, view) else {**style, "opacity": 0.0})
+    batch.lod = a        # :func:`detail_changed` asks again when the camera moves
+
+
+def detail_changed(batch, view, full: bool) -> bool:
+    """Whether ``batch``'s helices (drawn by :func:`draw`) need another level of detail
+    for ``view``: any group's chords or sides differ from those drawn."""
+    a = batch.lod
+    groups: dict[tuple, list[int]] = {}
+    for i, shape in enumerate(zip(a["coils"], a["ccw"])):
+        groups.setdefault(shape, []).append(i)
+    drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
+    return any(detail(a, np.array(idx), view, full) != drawn.get(shape)
+               for shape, idx in groups.items())
 
 
 THIN_WIRE_PX = 4.0     # px: a wire radius on screen below which its back faces are culled
