@@ -7,7 +7,23 @@ WIKI   := configs/wiki.toml
 
 .PHONY: setup render figures matter test lint bench baselines clean system-deps fidelity
 
+# Which Python made the .venv, and which one $(PYTHON) is: a .venv made by another (a run
+# with an older or newer Python, or one whose Python has gone) is removed and made afresh.
+PYWHO := import sys; print(sys.base_prefix, *sys.version_info[:3])
+WANT  := $(shell $(PYTHON) -c '$(PYWHO)' 2>/dev/null)
+HAVE  := $(shell $(BIN)/python -c '$(PYWHO)' 2>/dev/null)
+ifneq ($(WANT),$(HAVE))
+.PHONY: $(STAMP)
+endif
+
 $(STAMP): pyproject.toml
+	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 10))' 2>/dev/null || { \
+	  echo "springscene needs Python 3.10 or newer; $(PYTHON) is" \
+	    "$$($(PYTHON) --version 2>&1 || echo missing) (choose one: make PYTHON=python3.12 ...)"; \
+	  exit 1; }
+	@if [ -e $(VENV) ] && [ "$(WANT)" != "$(HAVE)" ]; then \
+	  echo "$(VENV) was made by another Python ($(or $(HAVE),a missing one)); making it" \
+	    "afresh with $(PYTHON) ($(WANT))"; rm -rf $(VENV); fi
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -e '.[test]'

@@ -5,6 +5,6 @@ This folder is not installed (the installed app is :mod:`springscene.app`).
 
 import sys
 
-from springscene.app.cli import main
+from springscene.app.signals import main    # the signal handlers first, then cli.main
 
 sys.exit(main())

@@ -8,7 +8,9 @@ with a one-line message naming the file and the key.
 from __future__ import annotations
 
 import math
-import tomllib
+import os
+import stat
+import sys
 from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable
@@ -23,6 +25,11 @@ from .model.lattice import first_free_layer, fixed_mask
 from .settings import (BOND_STYLES, COLOR_BY, FIXED_MODES, AtomCfg, BallCfg, BondCfg,  # noqa: F401
                        CameraCfg, Config, DampingCfg, DriveCfg, HolderCfg, LatticeCfg, PhysicsCfg,
                        PullCfg, RenderCfg, SceneCfg, SpringCfg, StartCfg, Vec)
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:                       # the same parser, before it joined the standard library
+    import tomli as tomllib
 
 # ---- checking -------------------------------------------------------------------------
 
@@ -87,10 +94,26 @@ def _nonzero_vec(v: Any) -> Vec:
     return (x, y, z)
 
 
-def _text(v: Any) -> str:
+MAX_TITLE = 300     # characters: a title is one line across the canvas (900 px show ~75)
+MAX_WORD = 100      # characters of any other text: a colour, a choice
+
+
+def _text(v: Any, limit: int = MAX_WORD) -> str:
     if not isinstance(v, str):
         raise ValueError(f"must be a string, got {type(v).__name__}")
+    if len(v) > limit:
+        raise ValueError(f"must be at most {limit} characters, got {len(v):,}")
     return v
+
+
+def _title(v: Any) -> str:
+    return _text(v, MAX_TITLE)
+
+
+def _color(v: Any):
+    if isinstance(v, str):
+        _text(v)
+    return parse_color(v)
 
 
 def _choice(*options: str) -> Callable[[Any], str]:
@@ -145,26 +168,26 @@ def _fov(v: Any) -> float:
 
 # section -> key -> checker; the keys are the dataclasses' fields.
 _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
-    "scene": {"title": _text, "width": _canvas, "height": _canvas,
-              "background": parse_color},
+    "scene": {"title": _title, "width": _canvas, "height": _canvas,
+              "background": _color},
     "camera": {"center": _vec, "forward": _nonzero_vec, "up": _nonzero_vec, "fov": _fov,
                "range": _positive},
     "physics": {"dt": _positive, "g": _vec, "integrator": _choice(*integrators.NAMES)},
     "damping": {"b": _non_negative},
     "drive": {"type": _choice("none", "support", "force"), "amplitude": _positive,
               "omega": _positive, "direction": _nonzero_vec},
-    "holder": {"pos": _vec, "size": _positive_vec, "color": parse_color},
+    "holder": {"pos": _vec, "size": _positive_vec, "color": _color},
     "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _non_negative,
-               "coils": _coils(MAX_COILS, whole=True), "color": parse_color, "k3": _non_negative,
+               "coils": _coils(MAX_COILS, whole=True), "color": _color, "k3": _non_negative,
                "yield_stretch": _positive},
-    "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": parse_color},
+    "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": _color},
     "render": {"fps": _positive_int, "duration": _non_negative, "speed": _positive,
                "color_by": _choice(*COLOR_BY)},
     "lattice": {"shape": _shape, "spacing": _positive, "density": _positive,
                 "fixed": _choice(*FIXED_MODES)},
-    "bond": {"k": _positive, "color": parse_color, "style": _choice(*BOND_STYLES),
+    "bond": {"k": _positive, "color": _color, "style": _choice(*BOND_STYLES),
              "radius": _positive, "thickness": _non_negative, "coils": _coils(MAX_BOND_COILS)},
-    "atom": {"m": _positive, "molar_mass": _positive, "radius": _positive, "color": parse_color},
+    "atom": {"m": _positive, "molar_mass": _positive, "radius": _positive, "color": _color},
     "start": {"kick": _vec, "temperature": _non_negative, "seed": _whole},
     "pull": {"force": _non_negative},
 }
@@ -198,19 +221,59 @@ def from_dict(data: dict[str, Any], source: str = "<dict>") -> Config:
                             f"(known: {', '.join(_CHECKS)})")
         if not isinstance(table, dict):
             raise UserError(f"{source}: [{section}] must be a table")
-        checks = _CHECKS[section]
-        values = {}
-        for key, value in table.items():
-            if key not in checks:
-                raise UserError(f"{source}: unknown key '{key}' in [{section}] "
-                                f"(known: {', '.join(checks)})")
-            try:
-                values[key] = checks[key](value)
-            except ValueError as exc:
-                raise UserError(f"{source}: [{section}] {key} {exc}") from None
+        values = _checked_table(source, section, table)
         cfg = replace(cfg, **{section: replace(getattr(cfg, section), **values)})
     _check_whole(cfg)
     return cfg
+
+
+def _checked_table(source: str, section: str, table: dict[str, Any]) -> dict[str, Any]:
+    """The keys of one ``[section]``, each through its check; errors name file and key."""
+    checks = _CHECKS[section]
+    values = {}
+    for key, value in table.items():
+        if key not in checks:
+            raise UserError(f"{source}: unknown key '{key}' in [{section}] "
+                            f"(known: {', '.join(checks)})")
+        try:
+            values[key] = checks[key](value)
+        except ValueError as exc:
+            raise UserError(f"{source}: [{section}] {key} {exc}") from None
+    return values
+
+
+def changed(cfg: Config, changes: dict[str, Any]) -> Config:
+    """``cfg`` with ``changes``, checked as the same values in its TOML file would be.
+
+    ``changes`` maps a section to a table of keys (``{"spring": {"k": 20}}``), or a key
+    to a value (``{"k": 20}``) where only one of the config's sections has that key.
+    This is :meth:`springscene.settings.Config.replace`.
+    """
+    own = [s for s in _CHECKS
+           if s not in (BALL_SECTIONS if cfg.is_lattice else LATTICE_SECTIONS)]
+    tables: dict[str, dict[str, Any]] = {}
+    for name, value in changes.items():
+        if name in _CHECKS:
+            if name not in own:
+                raise UserError(f"{cfg.source}: [{name}] does not apply to this config "
+                                f"(its sections: {', '.join(own)})")
+            if not isinstance(value, dict):
+                raise UserError(f"{cfg.source}: [{name}] must be a table (a dict of keys)")
+            tables.setdefault(name, {}).update(value)
+            continue
+        homes = [s for s in own if name in _CHECKS[s]]
+        if len(homes) != 1:
+            what = (f"is in [{'], ['.join(homes)}]: name the section, e.g. "
+                    f"{homes[-1]}={{{name!r}: ...}}" if homes else
+                    f"is not a key of any of its sections ({', '.join(own)})")
+            raise UserError(f"{cfg.source}: '{name}' {what}")
+        tables.setdefault(homes[0], {})[name] = value
+    new = cfg
+    for section, table in tables.items():
+        values = _checked_table(cfg.source, section, table)
+        new = replace(new, **{section: replace(getattr(new, section), **values)})
+    _check_whole(new)
+    return new
 
 
 def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
@@ -301,17 +364,44 @@ def stability_problem(cfg: Config) -> str | None:
                                          what)
 
 
+MAX_CONFIG_BYTES = 1_000_000     # the page's config is 900 bytes; a larger file is no config
+
+_NOT_REGULAR = ((stat.S_ISDIR, "is a directory, not a config file"),
+                (stat.S_ISFIFO, "is a named pipe (FIFO), not a config file"),
+                (stat.S_ISCHR, "is a character device, not a config file"),
+                (stat.S_ISBLK, "is a block device, not a config file"),
+                (stat.S_ISSOCK, "is a socket, not a config file"))
+
+
+def read_config_bytes(path: Path) -> bytes:
+    """The bytes of a config file: a regular file of at most :data:`MAX_CONFIG_BYTES`
+    (a FIFO would wait for a writer forever, ``/dev/zero`` never ends)."""
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)    # a FIFO opens without a writer
+    except FileNotFoundError:
+        raise UserError(f"{path}: no such config file") from None
+    except OSError as exc:
+        raise UserError(f"{path}: cannot read ({exc.strerror})") from None
+    mode = os.fstat(fd).st_mode
+    if not stat.S_ISREG(mode):
+        os.close(fd)
+        what = next((what for test, what in _NOT_REGULAR if test(mode)), "is not a regular file")
+        raise UserError(f"{path}: {what}")
+    with os.fdopen(fd, "rb") as fh:
+        try:
+            raw = fh.read(MAX_CONFIG_BYTES + 1)
+        except OSError as exc:
+            raise UserError(f"{path}: cannot read ({exc.strerror})") from None
+    if len(raw) > MAX_CONFIG_BYTES:
+        raise UserError(f"{path}: is over {MAX_CONFIG_BYTES:,} bytes; a config is a short "
+                        "TOML file")
+    return raw
+
+
 def load(path: str | Path) -> Config:
     """Read and check a TOML config file."""
     path = Path(path)
-    try:
-        raw = path.read_bytes()
-    except FileNotFoundError:
-        raise UserError(f"{path}: no such config file") from None
-    except IsADirectoryError:
-        raise UserError(f"{path}: is a directory, not a config file") from None
-    except OSError as exc:
-        raise UserError(f"{path}: cannot read ({exc.strerror})") from None
+    raw = read_config_bytes(path)
     try:
         data = tomllib.loads(raw.decode("utf-8"))
     except UnicodeDecodeError:
@@ -349,3 +439,5 @@ def check_flag(flag: str, check: Callable[[Any], Any], value: Any) -> Any:
 
 
 non_negative = _non_negative
+
+Config.checker = changed      # cfg.replace(...) checks through this module

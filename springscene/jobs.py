@@ -21,6 +21,8 @@ import numpy as np
 
 from . import render as pipeline
 from .figures import make_figures as oscillator_figures
+from .figures.files import figure_set
+from .figures.gallery import check_prefix
 from .figures.matter import make_figures as matter_figures
 from .model import physics
 from .outputs import check_output
@@ -28,6 +30,7 @@ from .science import analysis, matter
 from .science import sweep as sweeps
 from .settings import Config
 from .vpython.runner import ProgramResult, run_program
+from .vpython.supervise import run_supervised
 
 RenderStats = pipeline.RenderStats
 
@@ -50,7 +53,7 @@ def still(cfg: Config, time_s: float = 0.0, out: str | Path | None = None, *,
 
 
 def render(cfg: Config, out: str | Path, **options) -> pipeline.RenderStats:
-    """The motion as MP4 or GIF (options: :func:`springscene.render.render_video`'s)."""
+    """The motion as MP4, WebM, Ogg or GIF (options: :func:`springscene.render.render_video`'s)."""
     return pipeline.render_video(cfg, out, **options)
 
 
@@ -66,7 +69,8 @@ def report(cfg: Config, result: dict, as_json: bool = False) -> str:
     if cfg.is_lattice:
         return json.dumps(result, indent=2) if as_json else matter.table(result)
     if as_json:
-        keys = ("measured", "theory", "regime", "integrator", "dt", "duration")
+        keys = ("measured", "theory", "unit", "regime", "integrator", "dt", "dt_unit",
+                "duration", "duration_unit")
         return json.dumps({key: result[key] for key in keys}, indent=2)
     return analysis.table(result)
 
@@ -82,14 +86,30 @@ def sweep(cfg: Config, omega: np.ndarray, *, periods: float = 200,
 
 
 def figures(cfg: Config, out: str | Path, *, backend: str = "auto",
-            antialias: bool = True) -> list[Path]:
-    """The figure set of the config into the folder ``out``: the wiki page's, or a lattice's."""
-    if cfg.is_lattice:
-        return matter_figures(cfg, out)
-    return oscillator_figures(cfg, out, backend=backend, antialias=antialias)
+            antialias: bool = True, prefix: str = "") -> list[Path]:
+    """The figure set of the config into the folder ``out``: the wiki page's, or a lattice's.
+
+    The set is built in a private folder and replaces the old set whole at the end
+    (:func:`springscene.figures.files.figure_set`): a run that fails or is interrupted
+    leaves ``out`` as it was. ``prefix`` goes before every file name (and the names in
+    ``figures.wiki``)."""
+    check_prefix(prefix)
+    with figure_set(out) as staging:
+        if cfg.is_lattice:
+            written = matter_figures(cfg, staging, prefix=prefix)
+        else:
+            written = oscillator_figures(cfg, staging, backend=backend, antialias=antialias,
+                                         prefix=prefix)
+    return [staging.parent / path.name for path in written]
 
 
-def vpython(program: str | Path, out: str | Path, **options) -> ProgramResult:
+def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
+            **options) -> ProgramResult:
     """Run a VPython program headless to a video or still (options:
-    :func:`springscene.vpython.runner.run_program`'s)."""
+    :func:`springscene.vpython.runner.run_program`'s). Supervised (the default), it runs
+    in a child process that cannot leave anything behind, with ``timeout`` and
+    ``max_memory`` (:func:`springscene.vpython.supervise.run_supervised`); otherwise in
+    this process (``on_frame`` needs that)."""
+    if supervised and options.get("on_frame") is None:
+        return run_supervised(program, out, **options)
     return run_program(program, out, **options)

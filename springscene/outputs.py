@@ -1,11 +1,15 @@
 """Output files: checked up front, written to a temporary file and renamed into place.
 
-A failed or interrupted run never leaves a half-written file at the output path.
+A failed or interrupted run never leaves a half-written file at the output path, and
+a write that fails is a failure: no space, a read-only folder or an encoder error is
+an :class:`~springscene.errors.OutputError` naming the output (exit status 1), with
+the temporary file removed. Videos are streamed through ffmpeg (:mod:`springscene.video`).
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
 import tempfile
 from pathlib import Path
@@ -13,9 +17,11 @@ from typing import Iterator
 
 import numpy as np
 
-from .errors import UserError
+from .errors import OutputError, UserError
+from .video import (DEFAULT_QUALITY, VIDEO_SUFFIXES, WRITE_ERRNOS, count_frames, open_encoder,
+                    reason_of)
 
-VIDEO_FORMATS = (".mp4", ".gif")
+VIDEO_FORMATS = VIDEO_SUFFIXES          # .mp4, .webm, .ogv, .gif
 
 
 NAME_MAX = 255       # bytes in a file name on Linux's file systems
@@ -37,10 +43,20 @@ def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out"
     if not parent.is_dir():
         raise UserError(f"{flag} {path}: folder {parent} does not exist")
     if not os.access(parent, os.W_OK | os.X_OK):
+        if _read_only(parent):        # a write that cannot succeed: exit 1, as a full disk
+            raise OutputError(reason_of(OSError(errno.EROFS, os.strerror(errno.EROFS))), path,
+                              errno.EROFS)
         raise UserError(f"{flag} {path}: folder {parent} is not writable")
     if path.is_dir():
         raise UserError(f"{flag} {path}: is a directory")
     return path
+
+
+def _read_only(folder: Path) -> bool:
+    try:
+        return bool(os.statvfs(folder).f_flag & os.ST_RDONLY)
+    except OSError:
+        return False
 
 
 GIF_MAX_FPS = 50   # GIF delays are whole centiseconds; browsers slow delays under 2 cs
@@ -53,28 +69,58 @@ def check_video_fps(path: Path, fps: int) -> None:
 
 
 def gif_delays(n: int, fps: int) -> list[int]:
-    """Per-frame delays in ms, whole centiseconds, whose running sum stays on t = (f+1)/fps."""
-    ends = np.rint(np.arange(1, n + 1) * 100 / fps).astype(int)
-    return (10 * np.diff(ends, prepend=0)).tolist()
+    """Per-frame delays in ms of an ``n``-frame GIF at ``fps``, as ffmpeg's GIF muxer
+    writes them: whole centiseconds whose running sum stays on t = (f+1)/fps (rounded half
+    up), the last frame shown for 1/fps rounded."""
+    ends = (200 * np.arange(1, n + 1) + fps) // (2 * fps)
+    delays = np.diff(ends, prepend=0)
+    if n:
+        delays[-1] = (200 + fps) // (2 * fps)
+    return (10 * delays).tolist()
 
 
 @contextlib.contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
-    """Yield a temporary path beside ``path`` (same suffix); rename it to ``path`` on success."""
+    """Yield a temporary path beside ``path`` (same suffix); on success flush it to the disk
+    and rename it to ``path``. A failed write (no space, read-only, an encoder error) is an
+    :class:`OutputError` naming ``path``; on any failure the temporary file is removed."""
     try:
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=path.suffix,
                                    dir=path.parent or ".")
     except OSError as exc:
+        if exc.errno in WRITE_ERRNOS:
+            raise OutputError(reason_of(exc), path, exc.errno) from None
         raise UserError(f"--out {path}: cannot write there ({exc.strerror})") from None
     os.close(fd)
     tmp = Path(tmp)
     try:
         yield tmp
+        _flush(tmp)
         os.chmod(tmp, 0o644)
         os.replace(tmp, path)
+    except OutputError as exc:          # named by the file the user asked for
+        tmp.unlink(missing_ok=True)
+        if str(exc.path) != str(tmp):       # another output's, written meanwhile
+            raise
+        raise exc.at(path) from None
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        if exc.errno in WRITE_ERRNOS:
+            named = path if exc.filename in (None, str(tmp)) else exc.filename
+            raise OutputError(reason_of(exc), named, exc.errno) from None
+        raise
     except BaseException:
         tmp.unlink(missing_ok=True)
         raise
+
+
+def _flush(tmp: Path) -> None:
+    """The file's data on the disk (a delayed write that fails fails here, not later)."""
+    fd = os.open(tmp, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
 
 
 def write_png(path: Path, image: np.ndarray) -> None:
@@ -85,54 +131,50 @@ def write_png(path: Path, image: np.ndarray) -> None:
 
 
 class VideoWriter:
-    """Streams RGB frames to an MP4 (H.264 through imageio-ffmpeg) or a GIF (Pillow).
+    """Streams RGB frames to a video through ffmpeg: MP4 (H.264), WebM (VP9), Ogg (Theora)
+    or GIF (palette filters), chosen by ``path``'s suffix (:mod:`springscene.video`).
 
-    The frame size is kept exactly (no padding to macro blocks). Use as a context
-    manager around :func:`atomic_path`'s temporary file.
+    ``size`` is the frames' (width, height); MP4, WebM and Ogg are padded to even sizes
+    (:attr:`video_size`). ``quality`` is low, medium or high. At :meth:`close` the
+    encoder's exit status is checked and the file decoded again to count its frames: a
+    video that is not whole is an :class:`OutputError`. Use as a context manager around
+    :func:`atomic_path`'s temporary file; an exception inside stops the encoder at once.
     """
 
-    def __init__(self, path: Path, fps: int, size: tuple[int, int]) -> None:
-        self.path, self.fps, self.size = path, fps, size
+    def __init__(self, path: Path, fps: int, size: tuple[int, int],
+                 quality: str = DEFAULT_QUALITY) -> None:
+        self.path, self.fps, self.size, self.quality = path, fps, size, quality
         self.frames = 0
-        self._gif: list = []
-        self._palette = None
-        if path.suffix.lower() == ".mp4":
-            import imageio_ffmpeg  # noqa: PLC0415  heavy: imageio
-
-            w, h = size
-            pix = "yuv420p" if w % 2 == 0 and h % 2 == 0 else "yuv444p"
-            self._mp4 = imageio_ffmpeg.write_frames(
-                str(path), size, fps=fps, codec="libx264", pix_fmt_out=pix, quality=None,
-                macro_block_size=1, ffmpeg_log_level="error",
-                output_params=["-preset", "veryfast", "-crf", "20"])
-            self._mp4.send(None)
-        else:
-            self._mp4 = None
+        self._encoder = open_encoder(path, fps, size, quality)
+        self.video_size = self._encoder.video_size
 
     def write(self, frame: np.ndarray) -> None:
         if frame.shape[:2] != (self.size[1], self.size[0]):
             raise ValueError(f"a frame of {frame.shape[1]} x {frame.shape[0]} px in a video of "
                              f"{self.size[0]} x {self.size[1]}")
-        if self._mp4 is not None:
-            self._mp4.send(np.ascontiguousarray(frame))
-        else:
-            from PIL import Image  # noqa: PLC0415  heavy: Pillow
-
-            image = Image.fromarray(frame)
-            if self._palette is None:   # one palette for the whole GIF: no colour flicker
-                self._palette = image.quantize(256, method=Image.Quantize.FASTOCTREE)
-            self._gif.append(image.quantize(palette=self._palette, dither=Image.Dither.NONE))
+        self._encoder.write(frame)
         self.frames += 1
 
     def close(self) -> None:
-        if self._mp4 is not None:
-            self._mp4.close()
-            self._mp4 = None
-        elif self._gif:
-            first, rest = self._gif[0], self._gif[1:]
-            first.save(self.path, format="GIF", save_all=True, append_images=rest,
-                       duration=gif_delays(len(self._gif), self.fps), loop=0, optimize=False)
-            self._gif = []
+        """Finish the video and check it: the encoder's status, then its frames read back."""
+        encoder, self._encoder = self._encoder, None
+        if encoder is None:
+            return
+        try:
+            encoder.finish()
+        except BaseException:
+            encoder.abort()
+            raise
+        found = count_frames(self.path)
+        if found != self.frames:
+            raise OutputError(f"the video has {found} of its {self.frames} frames", self.path)
+
+    def abort(self) -> None:
+        """Stop the encoder without finishing the file (it is left to the caller's
+        :func:`atomic_path` to remove)."""
+        encoder, self._encoder = self._encoder, None
+        if encoder is not None:
+            encoder.abort()
 
     def __enter__(self) -> "VideoWriter":
         return self
@@ -140,5 +182,5 @@ class VideoWriter:
     def __exit__(self, exc_type, *exc) -> None:
         if exc_type is None:
             self.close()
-        elif self._mp4 is not None:
-            self._mp4.close()
+        else:
+            self.abort()

@@ -13,27 +13,33 @@ from __future__ import annotations
 
 import csv
 import time
+import warnings
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
-from tqdm import tqdm
+from tqdm.auto import tqdm   # a widget in Jupyter, text on a terminal
 
 from . import build, config
 from .errors import UserError
 from .model import physics
 from .model.timeline import frame_steps, play, step_at
+from .science import theory
 from .outputs import (VIDEO_FORMATS, VideoWriter, atomic_path, check_output, check_video_fps,
                       write_png)
+from .video import DEFAULT_QUALITY, check_quality
 from .settings import Config
 from .view.lattice_scene import COLOR_QUANTILE, LatticeScene, color_scale
 from .view.overlay import Overlays
 from .view.scene import Scene
 
-CSV_HEADER = ("t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E", "E_thermal")
+# each column "name [unit]", SI (the sweep's CSV and the lattice's totals alike)
+CSV_HEADER = ("t [s]", "x [m]", "y [m]", "z [m]", "px [kg m/s]", "py [kg m/s]", "pz [kg m/s]",
+              "K [J]", "Us [J]", "Ug [J]", "E [J]", "E_thermal [J]")
 # a lattice: the whole crystal per step (total momentum, energies)
-LATTICE_CSV_HEADER = ("t", "px", "py", "pz", "K", "Us", "E", "E_thermal")
+LATTICE_CSV_HEADER = ("t [s]", "px [kg m/s]", "py [kg m/s]", "pz [kg m/s]", "K [J]", "Us [J]",
+                      "E [J]", "E_thermal [J]")
 
 
 # ---- simulate ---------------------------------------------------------------------------
@@ -62,7 +68,8 @@ def lattice_totals(system: physics.System, n_steps: int) -> np.ndarray:
 
 
 def write_csv(traj, out: str | Path) -> Path:
-    """Write ``t,x,y,z,px,py,pz,K,Us,Ug,E,E_thermal`` rows, full float precision.
+    """Write ``t [s],x [m],y [m],z [m],px [kg m/s],...,K [J],Us [J],Ug [J],E [J],E_thermal [J]``
+    rows (:data:`CSV_HEADER`), full float precision.
 
     E = K + Us + Ug; E_thermal is the energy drag and permanent set have taken. A
     lattice's totals (an array from :func:`lattice_totals`) are written with
@@ -134,18 +141,26 @@ def still(cfg: Config, time_s: float, out: str | Path | None = None, *,
     return image
 
 
-def make_overlays(cfg: Config, overlays: tuple[str, ...] = ()) -> Overlays:
-    """The overlays of a render of ``cfg``; the graph and the energy bars are handed a
-    pre-run of the same (deterministic) system to the video's end, which fixes their axes."""
-    trajectory = None
+LATTICE_OVERLAYS = ("time",)    # a lattice's video: a clock (1 video second may be 1 ps)
+
+
+def make_overlays(cfg: Config, overlays: tuple[str, ...] | None = ()) -> Overlays:
+    """The overlays of a render of ``cfg`` (None: the default, :data:`LATTICE_OVERLAYS`
+    for a lattice, none for the ball); the graph and the energy bars are handed a pre-run
+    of the same (deterministic) system to the video's end, which fixes their axes, and the
+    bars the potential energy at rest at equilibrium (their zero of U)."""
+    if overlays is None:
+        overlays = LATTICE_OVERLAYS if cfg.is_lattice else ()
+    trajectory = u_rest = None
     if "graph" in overlays or "energy" in overlays:
         if cfg.is_lattice:
             raise UserError("--overlay: graph and energy follow the page's single ball; "
                             "a [lattice] config takes only time")
         trajectory = physics.run(build.system(cfg), step_at(cfg.render.duration, cfg.physics.dt,
                                                             "--duration"))
+        u_rest = theory.rest_potential(cfg, float(trajectory.L0[-1]))
     return Overlays(cfg.scene, overlays, trajectory, duration=cfg.render.duration,
-                    speed=cfg.render.speed)
+                    speed=cfg.render.speed, u_rest=u_rest)
 
 
 @dataclass
@@ -161,11 +176,24 @@ class RenderStats:
         return self.frames / self.seconds if self.seconds else float("inf")
 
 
+def repeated_frames(steps: np.ndarray, fps: int, dt: float, speed: float) -> str | None:
+    """What to say when frames repeat: ``fps`` above the physics' steps per video second."""
+    repeats = int(np.count_nonzero(np.diff(steps) == 0))
+    if not repeats:
+        return None
+    rate = speed / dt
+    return (f"--fps {fps} is above the physics' {rate:g} steps per video second "
+            f"(dt = {dt:g} s at speed {speed:g}): {repeats} of {len(steps)} frames repeat "
+            f"the one before; use --fps {max(1, int(rate))} or less, or a smaller --dt")
+
+
 def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
                  fps: int | None = None, speed: float | None = None, backend: str = "auto",
-                 antialias: bool = True, overlays: tuple[str, ...] = (),
-                 progress: bool = False) -> RenderStats:
-    """Render the motion to MP4 or GIF, ``speed`` simulated seconds per video second.
+                 antialias: bool = True, overlays: tuple[str, ...] | None = None,
+                 progress: bool = False, quality: str = DEFAULT_QUALITY,
+                 on_warning=None) -> RenderStats:
+    """Render the motion to MP4, WebM, Ogg or GIF, ``speed`` simulated seconds per video
+    second, at ``quality`` low, medium or high (:data:`springscene.video.ENCODINGS`).
 
     The default speed is the config's ``[render] speed``: 1 (real time) for the
     page's ball, far less for atoms (10^-12 s of a chain of atoms is a few seconds).
@@ -173,20 +201,27 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     ``overlays`` (names from :data:`springscene.overlay.OVERLAYS`) add a clock in the
     scene, a y(t) graph below it and energy bars beside it; the scene keeps its size
     and the video grows around it (:class:`springscene.overlay.Overlays`).
+
+    When ``fps`` asks for more frames than the physics has steps, frames repeat: said
+    through ``on_warning(message)``, or else as a Python warning.
     """
     path = check_output(out, VIDEO_FORMATS)
+    check_quality(quality)
     cfg = config.override(cfg, "render", duration=duration, fps=fps, speed=speed)
     duration, fps = cfg.render.duration, cfg.render.fps
     steps = frame_steps(duration, fps, cfg.physics.dt, cfg.render.speed)
     if len(steps) == 0:
         raise UserError(f"--duration {duration:g} at --fps {fps} gives no frame")
     check_video_fps(path, fps)
+    note = repeated_frames(steps, fps, cfg.physics.dt, cfg.render.speed)
+    if note:
+        (on_warning or warnings.warn)(note)
     system = build.system(cfg)
     start = time.perf_counter()
     panels = make_overlays(cfg, overlays)
     with make_scene(cfg, system, antialias=antialias, backend=backend) as scene, \
             atomic_path(path) as tmp:
-        with VideoWriter(tmp, fps, panels.size) as writer:
+        with VideoWriter(tmp, fps, panels.size, quality) as writer:
             loop_start = time.perf_counter()
             for system in play(system, tqdm(steps, desc=path.name, unit="frame",
                                             disable=not progress, leave=False)):

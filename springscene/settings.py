@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from typing import Any, Callable, ClassVar
 
 from .colors import Color
 from .model import integrators
@@ -188,6 +189,47 @@ class Config:
     start: StartCfg = field(default_factory=StartCfg)
     pull: PullCfg = field(default_factory=PullCfg)
     source: str = "<defaults>"
+
+    # set by springscene.config (which checks values; this module only holds them)
+    checker: ClassVar[Callable[[Config, dict[str, Any]], Config] | None] = None
+
+    def replace(self, **changes: Any) -> Config:
+        """A copy with ``changes``, each checked as the same value in the TOML file would be.
+
+        Parameters
+        ----------
+        **changes
+            A section and a dict of its keys, as in the TOML file
+            (``spring={"k": 20, "L0": 0.12}``), or a key alone where only one of the
+            config's sections has it (``k=20``, ``dt=0.005``, ``b=0.1``).
+
+        Returns
+        -------
+        Config
+            A new config; this one is unchanged (configs are frozen).
+
+        Raises
+        ------
+        UserError
+            A bad value, with the one-line message a TOML file with that value gets,
+            e.g. ``wiki.toml: [spring] k must be > 0, got -1``; or a key that is in
+            several sections (``radius``: name the section).
+
+        Examples
+        --------
+        >>> import springscene
+        >>> cfg = springscene.load_config("wiki")
+        >>> cfg.replace(k=20).spring.k
+        20.0
+        >>> cfg.replace(ball={"m": 0.2}, dt=0.005).physics.dt
+        0.005
+        >>> cfg.replace(k=-1)
+        Traceback (most recent call last):
+        springscene.errors.UserError: wiki.toml: [spring] k must be > 0, got -1
+        """
+        if Config.checker is None:
+            raise RuntimeError("import springscene.config to check a config's changes")
+        return Config.checker(self, changes)
 
     @property
     def driven(self) -> bool:

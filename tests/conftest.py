@@ -9,7 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from springscene import config
+if sys.version_info < (3, 11):    # the tests read TOML with tomllib; tomli is the same parser
+    import tomli
+    sys.modules.setdefault("tomllib", tomli)
+
+from springscene import config, pytest_plugin  # noqa: E402
 from springscene.view import backend
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -19,12 +23,19 @@ BASELINES = Path(__file__).resolve().parent / "baselines"
 
 def pytest_addoption(parser):
     parser.addoption("--regen-baselines", action="store_true",
-                     help="write the images the tests render as the new baselines")
+                     help="write the images the tests render as the new baselines "
+                     "(the same as springscene's plugin's --springscene-regen)")
+
+
+def pytest_configure(config):
+    if config.getoption("--regen-baselines"):
+        config.option.springscene_regen = True
 
 
 @pytest.fixture
 def regen(request) -> bool:
-    return request.config.getoption("--regen-baselines")
+    """Whether to write baselines (--regen-baselines or --springscene-regen)."""
+    return pytest_plugin.regenerating(request.config)
 
 
 @pytest.fixture(scope="session")

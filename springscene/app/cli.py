@@ -13,12 +13,18 @@ import warnings
 from pathlib import Path
 
 from .. import config, jobs
-from ..errors import ProgramError, UserError
+from ..errors import OutputError, ProgramError, UserError
 from ..model.integrators import NAMES
 from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
+from .compare import add_compare_command, run_compare
+from .starters import add_init_command, run_init, version
+from . import oserrors, signals
+from ..video import DEFAULT_QUALITY, QUALITIES
 from ..view.info import info
 from ..view.overlay import OVERLAYS, parse_overlays
+from ..vpython.supervise import RunEnded
+from ..vpython.supervise_report import size_text
 
 EXIT_BAD_INPUT = 2
 EXIT_PROGRAM_ERROR = 1     # the user's VPython program raised
@@ -33,19 +39,26 @@ class _Parser(argparse.ArgumentParser):
 
 def _build_parser() -> argparse.ArgumentParser:
     p = _Parser(prog="springscene", description="Headless ball-and-spring scenes like VPython's.")
+    p.add_argument("--version", action="version", version=version())
     sub = p.add_subparsers(dest="command", required=True, parser_class=_Parser)
     _add_numbers_commands(sub)
     _add_picture_commands(sub)
     _add_vpython_command(sub)
+    add_compare_command(sub)
+    add_init_command(sub)
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
     s.add_argument("--backend", default="auto", choices=BACKENDS)
     return p
 
 
-def _renders(sp: argparse.ArgumentParser) -> None:
+def _renders(sp: argparse.ArgumentParser, video: bool = False) -> None:
     sp.add_argument("--backend", default="auto", choices=BACKENDS,
                     help="off-screen OpenGL: EGL, OSMesa, or auto (EGL if present)")
     sp.add_argument("--draft", action="store_true", help="no anti-aliasing (faster)")
+    if video:
+        sp.add_argument("-q", "--quality", default=DEFAULT_QUALITY, choices=QUALITIES,
+                        help="the video's encoding: low (quick, small), medium (the default) "
+                        "or high (near lossless); --draft still sets the anti-aliasing")
 
 
 def _physics(sp: argparse.ArgumentParser) -> None:
@@ -74,7 +87,8 @@ def _add_numbers_commands(sub) -> None:
                    help="N drive frequencies from START to STOP rad/s")
     s.add_argument("--periods", type=float, default=200,
                    help="drive periods of the slowest frequency to run (default 200)")
-    s.add_argument("--out", help="curve.csv (omega, frequency, amplitude, theory)")
+    s.add_argument("--out", help="curve.csv (omega [rad/s], frequency [Hz], amplitude [m], "
+                   "theory [m])")
     _physics(s)
 
 
@@ -87,24 +101,28 @@ def _add_picture_commands(sub) -> None:
     _renders(s)
     _physics(s)
 
-    s = sub.add_parser("render", help="render the oscillation to MP4 or GIF in real time")
+    s = sub.add_parser("render", help="render the oscillation to a video (MP4, WebM, Ogg, GIF)")
     s.add_argument("config")
     s.add_argument("--duration", type=float, help="simulated seconds (default: the config's)")
     s.add_argument("--fps", type=int, help="frames per second (default: the config's)")
     s.add_argument("--speed", type=float,
                    help="simulated seconds per video second (default: the config's, "
                         "1 = real time)")
-    s.add_argument("--out", required=True, help="video.mp4 or video.gif")
+    s.add_argument("--out", required=True,
+                   help="video.mp4, .webm (VP9), .ogv (Theora: both upload to a wiki) or .gif")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
-    s.add_argument("--overlay", default="", metavar="LIST",
+    s.add_argument("--overlay", metavar="LIST",
                    help="comma list of: " + ", ".join(OVERLAYS)
-                   + " (a clock, a y(t) graph under the scene, energy bars beside it)")
-    _renders(s)
+                   + " (a clock, a y(t) graph under the scene, energy bars beside it), or "
+                   "none (default: a lattice's clock, else none)")
+    _renders(s, video=True)
     _physics(s)
 
     s = sub.add_parser("figures", help="the wiki page's figures, GIF and gallery snippet")
     s.add_argument("config")
     s.add_argument("--out", required=True, help="folder for the figures (created if missing)")
+    s.add_argument("--prefix", default="", help="put before every file name, and the names "
+                   "in figures.wiki (e.g. BallSpring_: no clash on a shared wiki)")
     _renders(s)
 
 
@@ -113,7 +131,8 @@ def _add_vpython_command(sub) -> None:
                        "and the page VPython would show")
     s.add_argument("program", help="a VPython program: VPython 7 (from vpython import *), "
                    "VPython 6 (from visual import *) or Web VPython (GlowScript header)")
-    s.add_argument("--out", required=True, help="video.mp4, video.gif or still.png")
+    s.add_argument("--out", required=True,
+                   help="video.mp4, .webm, .ogv, .gif, or still.png")
     length = s.add_mutually_exclusive_group()
     length.add_argument("--duration", type=float,
                         help="program seconds to film (default 10, or until the program ends)")
@@ -126,7 +145,12 @@ def _add_vpython_command(sub) -> None:
                    "not the page (title, canvases, captions, graphs)")
     s.add_argument("--no-page", action="store_true", help="write no OUT.html page")
     s.add_argument("--quiet", action="store_true", help="no summary line")
-    _renders(s)
+    s.add_argument("--timeout", type=float, metavar="S",
+                   help="stop the program after S seconds of wall clock (exit 124)")
+    s.add_argument("--max-memory", metavar="SIZE",
+                   help="stop the program when it uses more memory, e.g. 500M or 2G "
+                   "(exit 137; default: half the machine's)")
+    _renders(s, video=True)
 
 
 def _check_out_is_not_input(args: argparse.Namespace) -> None:
@@ -151,6 +175,10 @@ def _run(args: argparse.Namespace) -> int:
         for key, value in info(args.backend).items():
             print(f"{key}: {value}")
         return 0
+    if args.command == "compare":
+        return run_compare(args)
+    if args.command == "init":
+        return run_init(args)
     _check_out_is_not_input(args)
     if args.command == "vpython":
         return _vpython(args)
@@ -180,7 +208,8 @@ def _sweep(cfg: config.Config, args: argparse.Namespace) -> int:
 
 
 def _figures(cfg: config.Config, args: argparse.Namespace) -> int:
-    for path in jobs.figures(cfg, args.out, backend=args.backend, antialias=not args.draft):
+    for path in jobs.figures(cfg, args.out, backend=args.backend, antialias=not args.draft,
+                             prefix=args.prefix):
         print(f"wrote {path}")
     return 0
 
@@ -194,7 +223,8 @@ def _still(cfg: config.Config, args: argparse.Namespace) -> int:
 def _render(cfg: config.Config, args: argparse.Namespace) -> int:
     stats = jobs.render(cfg, args.out, duration=args.duration, fps=args.fps, speed=args.speed,
                         backend=args.backend, antialias=not args.draft,
-                        overlays=parse_overlays(args.overlay),
+                        overlays=parse_overlays(args.overlay), quality=args.quality,
+                        on_warning=lambda m: print(f"springscene: warning: {m}", file=sys.stderr),
                         progress=not args.quiet and sys.stderr.isatty())
     if not args.quiet:
         print(f"wrote {stats.path}: {stats.frames} frames at {stats.fps} fps "
@@ -210,18 +240,26 @@ def _vpython(args: argparse.Namespace) -> int:
     overlays = tuple(name.strip() for name in args.overlay.split(",") if name.strip())
     if args.overlay.strip() and not overlays:
         raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
-    result = jobs.vpython(args.program, args.out, duration=args.duration, frames=args.frames,
-                          fps=args.fps, backend=args.backend, antialias=not args.draft,
-                          overlays=overlays, page=not args.no_page,
-                          canvas_only=args.canvas_only,
-                          on_dialect=lambda d: print(f"springscene: {args.program}: "
-                                                     f"written for {d.name}", file=sys.stderr))
+    try:
+        result = jobs.vpython(args.program, args.out, duration=args.duration,
+                              frames=args.frames, fps=args.fps, backend=args.backend,
+                              antialias=not args.draft, overlays=overlays,
+                              page=not args.no_page, canvas_only=args.canvas_only,
+                              quality=args.quality,
+                              timeout=args.timeout, max_memory=args.max_memory,
+                              on_dialect=lambda d: print(f"springscene: {args.program}: "
+                                                         f"written for {d.name}",
+                                                         file=sys.stderr, flush=True))
+    except RunEnded as exc:         # os._exit, a signal, --timeout, --max-memory, sys.exit(n)
+        print(one_line(str(exc)), file=sys.stderr)
+        return exc.status
     for note in result.notes:
         print(f"springscene: note: {note}", file=sys.stderr)
     if not args.quiet:
         print(f"wrote {result.path}: {result.frames} frame{'s' * (result.frames != 1)} "
               f"({result.program_seconds:.2f} s of program time, ended by "
-              f"{result.ended}) in {result.seconds:.1f} s")
+              f"{result.ended}) in {result.seconds:.1f} s"
+              + (f", peak memory {size_text(result.peak_memory)}" if result.peak_memory else ""))
         for path in ([result.page] if result.page else []) + result.images:
             print(f"wrote {path}")
     return 0
@@ -246,12 +284,18 @@ def main(argv: list[str] | None = None) -> int:
     except ProgramError as exc:
         print(exc, file=sys.stderr)           # the program's own traceback
         return EXIT_PROGRAM_ERROR
+    except OutputError as exc:       # a write that failed (no space, encoder): exit 1
+        print(f"springscene: {one_line(str(exc))}", file=sys.stderr)
+        return 1
     except BrokenPipeError:          # e.g. `springscene analyze ... | head`
         sys.stderr.close()
         return 0
-    except KeyboardInterrupt:
-        print("springscene: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as exc:      # or a stop signal (signals.Interrupted)
+        return signals.report(exc)
+    except OSError as exc:                # no space, a read-only folder: one line, exit 1
+        print(f"springscene: {one_line(oserrors.line(exc, getattr(args, 'out', None)))}",
+              file=sys.stderr)
+        return oserrors.EXIT_WRITE_FAILED
 
 
 if __name__ == "__main__":

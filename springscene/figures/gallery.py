@@ -8,11 +8,13 @@ from :mod:`.oscillator`), so the numbers a caption states are the figure's.
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
 
 from .. import render
+from ..errors import UserError
 from ..model import physics
 from ..model.integrators import INTEGRATORS
 from ..science import sweep, theory
@@ -234,6 +236,19 @@ def gif_caption(cfg: Config, gif: Path, stats: render.RenderStats,
 
 
 # ---- the gallery --------------------------------------------------------------------------
+
+PREFIX_CHARS = re.compile(r"[\w.()-]*")   # letters, digits, _ . ( ) -: safe on disk and wiki
+
+
+def check_prefix(prefix: str) -> str:
+    """A file-name prefix (``BallSpring_``): letters, digits and ``_ . ( ) -`` only, not
+    starting with a dot, at most 100 characters; else bad input naming ``--prefix``."""
+    prefix = str(prefix)
+    if not PREFIX_CHARS.fullmatch(prefix) or prefix.startswith(".") or len(prefix) > 100:
+        raise UserError(f"--prefix {prefix!r}: use letters, digits and _ . ( ) - only "
+                        "(not starting with a dot, at most 100 characters)")
+    return prefix
+
 
 def gallery(entries: list[tuple[str, str]], vector: list[str] = ()) -> str:
     """A MediaWiki ``<gallery>`` of (file name, caption) pairs, ready to paste."""

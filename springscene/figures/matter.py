@@ -19,6 +19,7 @@ from ..settings import Config
 from ..view.plotstyle import BLACK, BLUE, GREY, VERMILLION, new_figure, style
 from ..units import MINUS, percent, prefixes, si_prefix
 from .files import prepare_out_dir, save_png
+from .gallery import check_prefix
 
 # ---- figures -----------------------------------------------------------------------------
 
@@ -233,13 +234,15 @@ def pull_figure(result: dict):
     return fig
 
 
-def make_figures(cfg: Config, out_dir: str | Path) -> list[Path]:
+def make_figures(cfg: Config, out_dir: str | Path, prefix: str = "") -> list[Path]:
     """Write the lattice config's figures (PNG) into ``out_dir``: ``pulse.png`` (a kick),
-    ``dispersion.png`` (a chain), ``pull.png`` (a pull), ``thermal.png`` (a temperature).
+    ``dispersion.png`` (a chain), ``pull.png`` (a pull), ``thermal.png`` (a temperature),
+    each name after ``prefix`` (:func:`.wiki.check_prefix`).
 
     Measured first, then written atomically; on an error no new file is left behind.
     """
 
+    prefix = check_prefix(prefix)
     created = not Path(out_dir).exists()
     out = prepare_out_dir(out_dir)
     makers = (("speed_of_sound", "pulse", pulse_figure),
@@ -251,7 +254,7 @@ def make_figures(cfg: Config, out_dir: str | Path) -> list[Path]:
         result = measure(cfg)
         for key, stem, draw in makers:
             if key in result:
-                written.append(save_png(draw(result), out / f"{stem}.png"))
+                written.append(save_png(draw(result), out / f"{prefix}{stem}.png"))
     except BaseException:
         for path in written:
             path.unlink(missing_ok=True)

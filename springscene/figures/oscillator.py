@@ -14,7 +14,7 @@ from importlib import resources
 
 import numpy as np
 
-from .. import build, config, render
+from .. import config, render
 from ..errors import UserError
 from ..model import physics
 from ..model.integrators import INTEGRATORS
@@ -205,13 +205,5 @@ def position_residual(cfg: Config, traj: physics.Trajectory) -> np.ndarray:
 
 def rest_potential(cfg: Config, traj: physics.Trajectory) -> float:
     """Us + Ug with the ball at rest at (the final) equilibrium."""
-    osc = theory.Oscillator.from_config(cfg)
-    axis = np.asarray(osc.axis)
-    s = build.system(cfg)
-    s.L0[:] = traj.L0[-1]
-    stretch = theory.stiffening_stretch(cfg.spring.k, cfg.spring.k3, cfg.ball.m * osc.g)
-    s.pos[1] = np.asarray(cfg.holder.pos) - axis * (traj.L0[-1] + stretch)
-    s.p[:] = 0.0
-    e = physics.energies(s)
-    return e.Us + e.Ug
+    return theory.rest_potential(cfg, float(traj.L0[-1]))
 

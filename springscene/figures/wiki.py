@@ -19,8 +19,8 @@ from ..science import sweep, theory
 from ..settings import Config
 from ..view import backend as backends
 from .files import prepare_out_dir, save_figure, write_text
-from .gallery import (GALLERY_ORDER, damped_caption, energy_caption, filmstrip_caption,
-                      gallery, gif_caption, hooke_caption, integrators_caption, phase_caption,
+from .gallery import (GALLERY_ORDER, check_prefix, damped_caption, energy_caption,
+                      filmstrip_caption, gallery, gif_caption, hooke_caption, integrators_caption, phase_caption,
                       position_caption, resonance_caption, scene_caption)
 from .media import filmstrip_figure, filmstrip_frames, make_gif
 from .oscillator import (SWEEP_PERIODS, analyze, demo_damped, demo_driven, hooke_config,
@@ -30,14 +30,19 @@ from .plots import (damped_figure, energy_figure, hooke_figure, integrators_figu
 
 
 def make_figures(cfg: Config, out_dir: str | Path, *, backend: str = "auto",
-                 antialias: bool = True) -> list[Path]:
-    """Write every figure, the GIF and ``figures.wiki`` into ``out_dir``; return their paths."""
+                 antialias: bool = True, prefix: str = "") -> list[Path]:
+    """Write every figure, the GIF and ``figures.wiki`` into ``out_dir``; return their paths.
 
+    ``prefix`` goes before every file name (``BallSpring_scene.png``, ...,
+    ``BallSpring_figures.wiki``) and the names in the gallery snippet, so that the set
+    does not clash with other files on a shared wiki.
+    """
+    prefix = check_prefix(prefix)
     out = prepare_out_dir(out_dir)
     backends.select(backend)
     before = set(out.iterdir())
     try:
-        return _make_figures(cfg, out, backend, antialias)
+        return _make_figures(_Page(cfg, out, backend, antialias, prefix))
     except BaseException:
         for path in set(out.iterdir()) - before:     # no half set of figures left behind
             if path.is_file():
@@ -53,18 +58,23 @@ class _Page:
     out: Path
     backend: str
     antialias: bool
+    prefix: str = ""
     written: list[Path] = field(default_factory=list)
     captions: list[tuple[str, str]] = field(default_factory=list)
+
+    def path(self, name: str) -> Path:
+        """Where the file ``name`` (``scene.png``) goes: in the folder, with the prefix."""
+        return self.out / f"{self.prefix}{name}"
 
     def save(self, fig, stem: str, caption: str, **kw) -> None:
         """Save a matplotlib figure as ``stem.png`` and ``stem.svg`` (or ``formats=``), and
         caption ``stem.png``."""
-        self.written += save_figure(fig, self.out, stem, **kw)
+        self.written += save_figure(fig, self.out, self.prefix + stem, **kw)
         self.captions.append((f"{stem}.png", caption))
 
 
-def _make_figures(cfg: Config, out: Path, backend: str, antialias: bool) -> list[Path]:
-    page = _Page(cfg, out, backend, antialias)
+def _make_figures(page: _Page) -> list[Path]:
+    cfg = page.cfg
     _scene(page)
     duration = run_duration(cfg)
     traj = render.simulate(cfg, duration)
@@ -87,7 +97,7 @@ def _make_figures(cfg: Config, out: Path, backend: str, antialias: bool) -> list
 
 def _scene(page: _Page) -> None:
     """1. the scene"""
-    path = page.out / "scene.png"
+    path = page.path("scene.png")
     render.still(page.cfg, 0.0, path, backend=page.backend, antialias=page.antialias)
     page.written.append(path)
     page.captions.append(("scene.png", scene_caption(page.cfg)))
@@ -171,7 +181,7 @@ def _filmstrip(page: _Page) -> None:
 
 def _gif(page: _Page) -> None:
     """10. GIF"""
-    gif = page.out / "oscillation.gif"
+    gif = page.path("oscillation.gif")
     stats, attempt = make_gif(page.cfg, gif, backend=page.backend, antialias=page.antialias)
     page.written.append(gif)
     page.captions.append(("oscillation.gif", gif_caption(page.cfg, gif, stats, attempt)))
@@ -181,5 +191,5 @@ def _gallery(page: _Page) -> None:
     """11. the gallery snippet"""
     by_name = dict(page.captions)
     vector = sorted(p.name for p in page.written if p.suffix == ".svg")
-    page.written.append(write_text(page.out / "figures.wiki",
-                                   gallery([(n, by_name[n]) for n in GALLERY_ORDER], vector)))
+    entries = [(page.prefix + n, by_name[n]) for n in GALLERY_ORDER]
+    page.written.append(write_text(page.path("figures.wiki"), gallery(entries, vector)))

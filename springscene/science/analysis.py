@@ -116,7 +116,8 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     return {"config": cfg.source, "integrator": cfg.physics.integrator, "dt": cfg.physics.dt,
             "duration": float(traj.t[-1] + traj.t0), "regime": _regime(cfg, osc, traj, plastic),
             "measured": {k: measured.get(k) for k in keys},
-            "theory": {k: theory_.get(k) for k in keys}}
+            "theory": {k: theory_.get(k) for k in keys},
+            "unit": {k: UNITS[k] for k in keys}, "dt_unit": "s", "duration_unit": "s"}
 
 
 def _check_measurable(cfg: Config, osc: theory.Oscillator, duration: float | None) -> None:

@@ -185,11 +185,11 @@ def speed_of_sound(cfg: Config, geo: Geometry, rec: Record) -> dict:
         "measured": float(v), "theory": lat.sound_speed, "unit": "m/s", "fit_error": float(v_err),
         "atoms": int(ok.sum()),
         "fit": {"t0": float(t0), "tau": float(tau), "airy_next_order": float(b),
-                "rms_residual": float(np.sqrt(np.mean(resid ** 2)))},
+                "rms_residual": float(np.sqrt(np.mean(resid ** 2))), "unit": "s"},
         "arrival_fraction": ARRIVAL_FRACTION,
         "signal": "displacement" if geo.held_start else "velocity",
-        "first_peak_linear_fit": float(naive),
-        "n": n_all[ok].tolist(), "arrival": t_all[ok].tolist(),
+        "first_peak_linear_fit": float(naive), "first_peak_linear_fit_unit": "m/s",
+        "n": n_all[ok].tolist(), "arrival": t_all[ok].tolist(), "arrival_unit": "s",
         "_all": (n_all, t_all, ok),
     }
 
@@ -245,10 +245,10 @@ def dispersion(cfg: Config, geo: Geometry, rec: Record) -> dict:
         "worst_mode": worst + 1,
         "modes": len(q),
         "zone_edge": {"measured": float(measured[-1]), "theory": float(theory[-1]),
-                      "q": float(q[-1])},
+                      "unit": "rad/s", "q": float(q[-1]), "q_unit": "1/m"},
         "lowest": {"measured": float(measured[0]), "theory": float(theory[0]),
-                   "q": float(q[0])},
-        "record": float(t[-1]),
+                   "unit": "rad/s", "q": float(q[0]), "q_unit": "1/m"},
+        "record": float(t[-1]), "record_unit": "s",
         "integrator_theory": integ.tolist() if integ is not None else None,
         "_spectrum": (omega, np.array(spectra)),
     }
@@ -391,9 +391,11 @@ def measure(cfg: Config, duration: float | None = None) -> dict:
     lat = geo.lat
     result = {
         "config": cfg.source,
-        "lattice": {"shape": list(lat.shape), "spacing": lat.d, "mass": lat.m, "k": lat.k,
+        "lattice": {"shape": list(lat.shape), "spacing": lat.d, "spacing_unit": "m",
+                    "mass": lat.m, "mass_unit": "kg", "k": lat.k, "k_unit": "N/m",
                     "fixed": lat.fixed, "free_atoms": geo.n_free},
-        "integrator": cfg.physics.integrator, "dt": cfg.physics.dt, "duration": plan.duration,
+        "integrator": cfg.physics.integrator, "dt": cfg.physics.dt, "dt_unit": "s",
+        "duration": plan.duration, "duration_unit": "s",
     }
     if "speed_of_sound" in plan.what:
         try:

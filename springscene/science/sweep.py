@@ -136,7 +136,7 @@ def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
     return result
 
 
-CSV_HEADER = ("omega", "frequency", "amplitude", "theory")
+CSV_HEADER = ("omega [rad/s]", "frequency [Hz]", "amplitude [m]", "theory [m]")
 
 
 def write_csv(result: SweepResult, out: str | Path) -> Path:

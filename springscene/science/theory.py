@@ -23,7 +23,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .. import build
 from ..errors import UserError
+from ..model import physics
 from ..settings import Config
 
 
@@ -223,3 +225,19 @@ def permanent_set(osc: Oscillator, yield_stretch: float) -> float | None:
     if beta == 0:
         return v_y ** 2 / (2 * a)
     return v_y / beta - (a / beta ** 2) * math.log1p(beta * v_y / a)
+
+
+def rest_potential(cfg: Config, L0: float | None = None) -> float:
+    """Us + Ug (J) with the ball at rest at equilibrium, the spring relaxed at ``L0``
+    (default: the config's; a run that took a permanent set: its final length): the zero
+    of the energy measured "about equilibrium" (K + Us + Ug - this)."""
+    osc = Oscillator.from_config(cfg)
+    axis = np.asarray(osc.axis)
+    s = build.system(cfg)
+    if L0 is not None:
+        s.L0[:] = L0
+    stretch = stiffening_stretch(cfg.spring.k, cfg.spring.k3, cfg.ball.m * osc.g)
+    s.pos[1] = np.asarray(cfg.holder.pos) - axis * (float(s.L0[0]) + stretch)
+    s.p[:] = 0.0
+    e = physics.energies(s)
+    return e.Us + e.Ug

@@ -4,7 +4,7 @@ The 3D scene keeps its size; the video frame grows around it::
 
     +-----------------+--------+
     |  scene (w x h)  | energy |      graph:  below the scene, as VPython puts its graphs
-    |  t = 1.23 s     |  bars  |      energy: beside it, as PhET's "Masses and Springs"
+    |  t = 1.23 s     |  bars  |      energy: beside it, about equilibrium (K <-> U)
     +-----------------+        |      time:   a clock in the scene's top-left corner
     |  y(t) graph     |        |              (a text actor of the scene itself)
     +-----------------+--------+
@@ -39,18 +39,23 @@ FONT_SIZE = 11           # pt at DPI: about 15 px
 
 TRACE_COLOR = (0.0, 0.3, 0.8)
 # (label, colour) of each energy bar, VPython's colours darkened where pure ones are
-# unreadable on white
+# unreadable on white; U is Us + Ug measured from the ball at rest at equilibrium
 ENERGY_BARS = (
     ("K", (0.9, 0.0, 0.0)),                 # red
-    ("$U_s$", (0.0, 0.65, 0.8)),            # cyan, like the spring
-    ("$U_g$", (0.0, 0.6, 0.0)),             # green
+    ("U", (0.0, 0.65, 0.8)),                # cyan, like the spring
     ("thermal", (1.0, 0.55, 0.0)),          # orange
     ("total", (0.0, 0.0, 0.0)),             # black
 )
 
 
-def parse_overlays(text: str, flag: str = "--overlay") -> tuple[str, ...]:
-    """``"time,graph"`` as ("time", "graph"); unknown names are bad input."""
+def parse_overlays(text: str | None, flag: str = "--overlay") -> tuple[str, ...] | None:
+    """``"time,graph"`` as ("time", "graph"); ``"none"`` as (); None (not given) as None,
+    which leaves the choice to the config (:func:`springscene.render.make_overlays`: a
+    lattice's video gets its clock). Unknown names are bad input."""
+    if text is None:
+        return None
+    if str(text).strip().lower() == "none":
+        return ()
     names = tuple(dict.fromkeys(n.strip() for n in str(text).split(",") if n.strip()))
     if str(text).strip() and not names:
         raise UserError(f"{flag} {text!r}: no overlay named (use a comma list of "
@@ -62,10 +67,28 @@ def parse_overlays(text: str, flag: str = "--overlay") -> tuple[str, ...]:
     return names
 
 
-def clock_text(t: float, speed: float = 1.0) -> str:
-    """The clock's text: ``t = 1.23 s``; in ps or fs when a video second is that short."""
-    scale, prefix = si_prefix(speed, largest="", smallest="f", tolerance=0.5)
+def clock_text(t: float, speed: float = 1.0, duration: float = 0.0) -> str:
+    """The clock's text: ``t = 1.23 s``; in ps or fs when the video's simulated span (its
+    ``duration``, or a video second, ``speed``, when longer) is that short."""
+    scale, prefix = si_prefix(max(speed, duration), largest="", smallest="f", tolerance=0.5)
     return f"t = {t / scale:.2f} {prefix}s"
+
+
+INK_LEVEL = 40          # levels of 255 off the background that count as drawn
+
+
+def clock_top(image: np.ndarray, background, *, margin: int, width: int,
+              height: int) -> int:
+    """Pixels from the top edge for the clock's top: ``margin``, or, when something is
+    already drawn where the clock would go (a long title reaching into the top-left
+    corner), the first empty row below it plus ``margin`` / 2."""
+    ink = np.abs(image.astype(np.int16) - np.rint(np.asarray(background) * 255)).max(axis=2)
+    inked = (ink > INK_LEVEL)[:, :margin + width].any(axis=1)
+    if not inked[:margin + height].any():
+        return margin
+    empty = np.flatnonzero(~inked[margin:]) + margin
+    below = empty[empty > np.flatnonzero(inked[:margin + height])[-1]]
+    return int(below[0]) + margin // 2 if len(below) else margin
 
 
 def _limits(values, include: tuple[float, ...] = (), pad: float = 0.08,
@@ -172,16 +195,21 @@ class GraphPanel(_Panel):
 
 
 class EnergyPanel(_Panel):
-    """Bars of K, Us, Ug, thermal and total energy (J), as PhET's Masses and Springs.
+    """Bars of K, U, thermal and total energy, as PhET's Masses and Springs, about
+    equilibrium so that the exchange between K and U shows.
 
-    The y axis is fixed from the pre-run ``traj`` (every bar's whole range, and 0).
-    As PhET does with its movable reference line, Ug is measured from the ball's
-    lowest point in the run (the engine's Ug is zero at the holder), so every bar of
-    a free oscillation is positive and K's share of the total is visible; the total
-    is K + Us + Ug + thermal with that zero.
+    U is Us + Ug measured from ``u_rest``, their value with the ball at rest at
+    equilibrium (the figure energy.png's lower panel does the same): a free oscillation
+    trades K and U between 0 and 1/2 k A^2 (3 mJ on the page), where Us and Ug apart
+    each swing by m g A about some 25 mJ and would squash the exchange to a sliver.
+    The total is K + U + thermal. Without ``u_rest`` the lowest Us + Ug of the run is
+    the zero (the ball passes equilibrium once a half period). The y axis, in J with an
+    SI prefix (mJ on the page), is fixed from the pre-run ``traj`` (every bar's whole
+    range, and 0).
     """
 
-    def __init__(self, height: int, traj, width: int = ENERGY_WIDTH) -> None:
+    def __init__(self, height: int, traj, width: int = ENERGY_WIDTH,
+                 u_rest: float | None = None) -> None:
         from matplotlib.collections import PolyCollection  # noqa: PLC0415  heavy: matplotlib
 
         super().__init__(width, height)
@@ -197,12 +225,16 @@ class EnergyPanel(_Panel):
                                        edgecolors="none", animated=True)
             ax.add_collection(self.bars, autolim=False)
             ax.set_xlim(-0.5, len(x) - 0.5)
-            self.ug_zero = float(np.min(traj.Ug))
-            ax.set_ylim(*_limits(self.values(traj), include=(0.0,)))
+            self.u_rest = (float(np.min(traj.Us + traj.Ug)) if u_rest is None
+                           else float(u_rest))
+            lo, hi = _limits(self.values(traj), include=(0.0,))
+            self.scale, prefix = si_prefix(max(abs(lo), abs(hi)), largest="", smallest="n")
+            ax.set_ylim(lo / self.scale, hi / self.scale)
             ax.set_xticks(x, labels, fontsize=FONT_SIZE - 1)
             ax.axhline(0.0, color="black", linewidth=1.0)
-            ax.set_title("energy (J)", fontsize=FONT_SIZE, pad=6)
-            ax.set_xlabel("$U_g$ = 0 at the lowest point", fontsize=FONT_SIZE - 2)
+            ax.set_title(f"energy ({prefix}J)", fontsize=FONT_SIZE, pad=6)
+            ax.set_xlabel("U = $U_s + U_g$, 0 at rest at equilibrium",
+                          fontsize=FONT_SIZE - 2)
             ax.grid(True, axis="y", color="0.88", linewidth=0.8)
             ax.set_axisbelow(True)
             ax.tick_params(axis="x", length=0)
@@ -210,14 +242,15 @@ class EnergyPanel(_Panel):
             self._freeze(ax)
 
     def values(self, e) -> tuple:
-        """(K, Us, Ug, thermal, total) as drawn, from Energies or a Trajectory's arrays."""
-        ug = e.Ug - self.ug_zero
-        return (e.K, e.Us, ug, e.E_thermal, e.K + e.Us + ug + e.E_thermal)
+        """(K, U, thermal, total) in J, from Energies or a Trajectory's arrays; drawn
+        in units of :attr:`scale` J."""
+        u = e.Us + e.Ug - self.u_rest
+        return (e.K, u, e.E_thermal, e.K + u + e.E_thermal)
 
     def draw(self, e) -> np.ndarray:
         """The bars at :class:`~springscene.physics.Energies` ``e``: the RGBA pixels of
         :attr:`region`."""
-        self._verts[:, 2:, 1] = np.array(self.values(e))[:, None]
+        self._verts[:, 2:, 1] = np.array(self.values(e))[:, None] / self.scale
         self.bars.set_verts(self._verts)       # from 0 up to the value (down when negative)
         return self._blit((self.bars,))
 
@@ -239,6 +272,9 @@ class Overlays:
         The video's simulated seconds (the graph's time axis).
     speed : float
         Simulated seconds per video second (the clock's unit).
+    u_rest : float, optional
+        Us + Ug at rest at equilibrium (J), the zero of the energy bars' U
+        (:class:`EnergyPanel`).
 
     Use per frame, after the system is stepped and the scene updated::
 
@@ -247,7 +283,8 @@ class Overlays:
     """
 
     def __init__(self, canvas: SceneCfg, overlays: tuple[str, ...] = (), trajectory=None, *,
-                 duration: float = 0.0, speed: float = 1.0) -> None:
+                 duration: float = 0.0, speed: float = 1.0,
+                 u_rest: float | None = None) -> None:
         overlays = tuple(overlays)
         for name in overlays:
             if name not in OVERLAYS:
@@ -255,7 +292,9 @@ class Overlays:
         if ("graph" in overlays or "energy" in overlays) and trajectory is None:
             raise ValueError("the graph and energy overlays need the run's trajectory")
         self.names = overlays
-        self.speed = speed
+        self.speed, self.duration = speed, duration
+        self._canvas = canvas
+        self._clock_top: int | None = None
         self.scene_size = (canvas.width, canvas.height)
         w, h = self.scene_size
         self.graph = self.energy = None
@@ -265,7 +304,8 @@ class Overlays:
             left = self.graph.width
         height = h + (self.graph.height if self.graph is not None else 0)
         if "energy" in overlays:
-            self.energy = EnergyPanel(max(height, ENERGY_MIN_HEIGHT), trajectory)
+            self.energy = EnergyPanel(max(height, ENERGY_MIN_HEIGHT), trajectory,
+                                      u_rest=u_rest)
             height = self.energy.height
         self.size = (left + (self.energy.width if self.energy is not None else 0), height)
         self._frame = None
@@ -298,9 +338,20 @@ class Overlays:
         return self._frame is not None
 
     def update_scene(self, scene, system) -> None:
-        """Set the scene's clock to the system's time (before the scene is rendered)."""
-        if "time" in self.names:
-            scene.set_clock(clock_text(system.t, self.speed))
+        """Set the scene's clock to the system's time (before the scene is rendered); in
+        the top-left corner, under the title when the title reaches into that corner
+        (:func:`clock_top`, from one frame of the scene rendered before the clock)."""
+        if "time" not in self.names:
+            return
+        text = clock_text(system.t, self.speed, self.duration)
+        if self._clock_top is None:
+            self._clock_top = scene.CLOCK_MARGIN
+            if self._canvas.title.strip():
+                self._clock_top = clock_top(
+                    scene.frame(), self._canvas.background, margin=scene.CLOCK_MARGIN,
+                    width=int(0.5 * scene.CLOCK_FONT_SIZE * (len(text) + 1)),
+                    height=scene.CLOCK_FONT_SIZE)
+        scene.set_clock(text, top=self._clock_top)
 
     def compose(self, scene_image: np.ndarray, system) -> np.ndarray:
         """The video frame: ``scene_image`` (h, w, 3) with the panels at ``system``'s state.

@@ -158,8 +158,9 @@ class SceneBase:
     CLOCK_FONT_SIZE = 20     # px, a little smaller than the title
     CLOCK_MARGIN = 12        # px from the top and left edges
 
-    def set_clock(self, text: str) -> None:
-        """Show ``text`` (e.g. ``t = 1.23 s``) in the top-left corner from the next frame on.
+    def set_clock(self, text: str, top: int | None = None) -> None:
+        """Show ``text`` (e.g. ``t = 1.23 s``) in the top-left corner from the next frame on,
+        its top ``top`` px below the canvas's edge (default :attr:`CLOCK_MARGIN`).
 
         The text actor is added on the first call (black on a light background, white
         on a dark one, as the title); later calls only change its text.
@@ -175,7 +176,8 @@ class SceneBase:
             prop.SetColor((0.0,) * 3 if dark else (1.0,) * 3)
             prop.SetJustificationToLeft()
             prop.SetVerticalJustificationToTop()
-            actor.SetPosition(self.CLOCK_MARGIN, self.canvas.height - self.CLOCK_MARGIN)
+            actor.SetPosition(self.CLOCK_MARGIN, self.canvas.height
+                              - (self.CLOCK_MARGIN if top is None else top))
             self.plotter.renderer.AddViewProp(actor)
             self._clock = actor
         self._clock.SetInput(str(text))

@@ -27,6 +27,29 @@ from .page_frame import claim_slot
 from .vector import is_lenient, vector
 
 
+MAX_SIDE = 8192    # pixels a side; VPython sets no limit (GlowScript hands any value to the
+                   # page's <canvas> element, and WebGL clamps its drawing buffer to the GPU's)
+
+
+class CanvasSizeError(ValueError):
+    """A canvas width or height no picture can have; the runner reports it on one line
+    at the program's line that set it."""
+
+
+def _side(cv: "canvas", name: str, value):
+    """``value`` if it is a canvas side springscene can draw: 1 to :data:`MAX_SIDE` px."""
+    try:
+        ok = math.isfinite(value) and 1 <= value < MAX_SIDE + 1
+    except TypeError:
+        ok = None
+    if not ok:
+        who = "scene" if canvas._all and canvas._all[0] is cv else "canvas"
+        shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
+        need = "a number of pixels" if ok is None else f"1 to {MAX_SIDE} pixels"
+        raise CanvasSizeError(f"{who}.{name} = {shown}: a canvas {name} must be {need}")
+    return value
+
+
 class _Colors:
     """``color.red`` ... and ``color.gray(g)``, VPython's values."""
 
@@ -282,6 +305,11 @@ class canvas:
 
     visible = property(lambda self: self._visible,
                        lambda self, v: setattr(self, "_visible", bool(v)))
+
+    width = property(lambda self: self._width,
+                     lambda self, v: setattr(self, "_width", _side(self, "width", v)))
+    height = property(lambda self: self._height,
+                      lambda self, v: setattr(self, "_height", _side(self, "height", v)))
 
     # -- page text -----------------------------------------------------------------------
 

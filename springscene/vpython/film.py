@@ -49,10 +49,11 @@ class Film:
     """Takes the frames: draws the page (or the shown canvas), feeds the writer."""
 
     def __init__(self, tmp: Path | None, fps: int, overlays: tuple[str, ...], backend: str,
-                 antialias: bool, on_frame, canvas_only: bool = False) -> None:
+                 antialias: bool, on_frame, canvas_only: bool = False,
+                 quality: str = "medium") -> None:
         self.tmp, self.fps, self.overlays = tmp, fps, overlays
         self.backend, self.antialias, self.on_frame = backend, antialias, on_frame
-        self.canvas_only = canvas_only
+        self.canvas_only, self.quality = canvas_only, quality
         self.renderers: dict[int, Renderer] = {}
         self.shown = None
         self.writer = None
@@ -124,7 +125,8 @@ class Film:
     def take(self) -> None:
         image = self._canvas_frame() if self.canvas_only else self.page()
         if self.writer is None:
-            self.writer = VideoWriter(self.tmp, self.fps, (image.shape[1], image.shape[0]))
+            self.writer = VideoWriter(self.tmp, self.fps, (image.shape[1], image.shape[0]),
+                                      self.quality)
         elif image.shape[:2] != self.writer.size[::-1]:     # a canvas resized mid-run
             if not any("resized" in n for n in self.notes):
                 self.notes.append(f"the canvas was resized to {image.shape[1]} x "

@@ -5,7 +5,9 @@ The program is the user's own code, run in this process as ``__main__`` with
 is promised. Its clock is :mod:`springscene.vpython.runtime`'s: frames are taken
 on ``rate`` calls, and the run ends when the program ends or when the video has
 its frames. An exception in the program is reported with the program's own
-traceback (its file and line, springscene's frames left out): :class:`ProgramError`.
+traceback (its file and line, springscene's frames left out): :class:`ProgramError`;
+``sys.exit(n)`` is :class:`ProgramExit` with Python's status. ``springscene vpython``
+runs this in a child process that owns nothing (:mod:`.supervise`, :mod:`.child`).
 """
 
 from __future__ import annotations
@@ -19,11 +21,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import vpython as vp
-from ..errors import ProgramError, UserError
+from ..errors import OutputError, ProgramError, UserError
 from ..outputs import VIDEO_FORMATS, atomic_path, check_output, check_video_fps, write_png
 from . import attachments, autoscale, dialects, glowscript, runtime, visual6, widgets
 from .vector import set_lenient
-from .canvas import canvas
+from .canvas import CanvasSizeError, canvas
 from .film import Film, Printed
 from .graph import graphs
 from .graph_images import write_images
@@ -51,6 +53,20 @@ class ProgramResult:
     page: Path | None = None
     images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
     notes: list[str] = field(default_factory=list)        # what ran without a user
+    peak_memory: int | None = None    # bytes, the run's largest resident set (a supervised run)
+
+
+class ProgramExit(ProgramError):
+    """The program called ``sys.exit`` with a failure: ``status`` is the exit status
+    Python would give (an int's low byte, 1 for anything else, whose text is ``said``)."""
+
+    def __init__(self, path: Path, code) -> None:
+        if isinstance(code, int):
+            self.status, self.said = (code % 256) or 1, None
+        else:
+            self.status, self.said = 1, str(code)
+        super().__init__(f"{path}: the program exited with status {self.status}"
+                         + (f" ({self.said})" if self.said is not None else ""))
 
 
 def _check_program(program) -> Path:
@@ -112,6 +128,15 @@ def _user_traceback(exc: BaseException) -> str:
     return "".join(tbe.format()).rstrip("\n")
 
 
+def _program_line(exc: BaseException) -> str:
+    """``"prog.py, line 3: "``: the program's innermost frame in ``exc``'s traceback."""
+    where = ""
+    for frame in traceback.extract_tb(exc.__traceback__):
+        if not str(Path(frame.filename).resolve()).startswith(_PACKAGE):
+            where = f"{frame.filename}, line {frame.lineno}: "
+    return where
+
+
 def _install_modules():
     """Make ``import vpython`` import springscene's module, and ``visual`` (with
     ``visual.graph`` and the rest) VPython 6's names on it (:mod:`.visual6`)."""
@@ -141,7 +166,7 @@ def _restore_modules(saved: dict) -> None:
 def run_program(program, out, *, duration: float | None = None, frames: int | None = None,
                 fps: int = DEFAULT_FPS, backend: str = "auto", antialias: bool = True,
                 overlays: tuple[str, ...] = (), page: bool = True, canvas_only: bool = False,
-                on_frame=None, on_dialect=None) -> ProgramResult:
+                on_frame=None, on_dialect=None, quality: str = "medium") -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF) or final still (PNG).
 
     A frame is the program's page as VPython lays it out (titles, canvases, captions,
@@ -161,7 +186,7 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     images: list[Path] = []
     with atomic_path(out) as tmp:
         film = Film(None if still else tmp, fps, overlays, backend, antialias, on_frame,
-                    canvas_only)
+                    canvas_only, quality=quality)
 
         capture = _capturer(out, film, images)
         # a still only needs the end: the clock runs, no frame is taken on it
@@ -271,11 +296,12 @@ def _execute(code: types.CodeType, path: Path, dialect: dialects.Dialect,
         ended, ok = limit, True
     except SystemExit as exc:
         if exc.code not in (None, 0):
-            raise ProgramError(f"{path}: the program exited with status {exc.code}") \
-                from None
+            raise ProgramExit(path, exc.code) from None
         ok = True
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, OutputError):   # a stop signal; a write that failed
         raise
+    except CanvasSizeError as exc:   # one line, at the program's line that set the size
+        raise ProgramError(f"springscene: {_program_line(exc)}{exc}") from None
     except BaseException as exc:     # the program's own error, with its own traceback
         raise ProgramError(_user_traceback(exc)) from None
     finally:

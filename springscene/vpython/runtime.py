@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import math
 import time
+import warnings
 from fractions import Fraction
 from typing import Callable
 
@@ -54,7 +55,9 @@ class Timeline:
         self.capped_rate = None     # the largest rate(n) run at the machine's pace instead
         self.wall: float | None = None   # when the last such rate() call returned
         self.on_render: Callable[[], None] | None = None   # at VPython's render rate
-
+        self.sleeps = 0                  # sleep() calls
+        self.last_call: tuple[str, object] = ("", None)  # ("rate", n) or ("sleep", t): why
+        self.last_span = Fraction(0)     # the program time the last call moved on by
 
     @property
     def seconds(self) -> float:
@@ -63,6 +66,7 @@ class Timeline:
     def advance(self, span: Fraction) -> None:
         """Show the scene as it is for ``span`` program seconds."""
         end = self.clock + span
+        self.last_span = span
         if self.on_render is not None and Fraction(self.renders, RENDERS_PER_SECOND) < end:
             # a browser renders 60 times a second; while the program waits nothing moves,
             # so the renders due in this span see one scene: one call stands for them all
@@ -79,12 +83,19 @@ class Timeline:
 
 
 _current: Timeline | None = None
+_last: Timeline | None = None
 
 
 def start(timeline: Timeline | None) -> None:
     """Make ``timeline`` the clock ``rate`` and ``sleep`` advance (None: no clock)."""
-    global _current
+    global _current, _last
     _current = timeline
+    _last = timeline or _last
+
+
+def last() -> Timeline | None:
+    """The clock of the run now, or of the last run (where it stopped)."""
+    return _last
 
 
 def current() -> Timeline | None:
@@ -111,6 +122,7 @@ def rate(n) -> None:
         raise ValueError("rate value must be greater than or equal to 1")
     if _current is not None:
         _current.calls += 1
+        _current.last_call = ("rate", n)
         if n > MAX_RATE:           # "as fast as it goes": the machine's pace, not 1e15 a second
             _current.capped_rate = max(_current.capped_rate or 0, n)
             _current.advance(_machine_pace(_current))
@@ -135,6 +147,8 @@ def sleep(dt) -> None:
         raise ValueError("sleep time must not be negative")
     if _current is not None:
         _current.wall = None
+        _current.sleeps += 1
+        _current.last_call = ("sleep", dt)
         _current.advance(span)
 
 
@@ -155,5 +169,9 @@ def set_capture(fn: Callable | None) -> None:
 
 
 def capture(cv, name: str) -> None:
-    if _capture is not None:
-        _capture(cv, name)
+    if _capture is None:       # a program run by python itself: no renderer, no pictures
+        warnings.warn(f"scene.capture({name!r}) saved nothing: pictures are taken only when "
+                      "the program runs under `springscene vpython PROGRAM --out ...` (or "
+                      "springscene.run_vpython)", UserWarning, stacklevel=3)
+        return
+    _capture(cv, name)

@@ -221,7 +221,7 @@ def test_sweep_cli_writes_curve(tmp_path):
                    check=True)
     assert "peak: measured" in proc.stdout
     rows = list(csv.reader(open(out)))
-    assert rows[0] == ["omega", "frequency", "amplitude", "theory"]
+    assert rows[0] == ["omega [rad/s]", "frequency [Hz]", "amplitude [m]", "theory [m]"]
     data = np.array(rows[1:], dtype=float)
     assert np.allclose(data[:, 0], [10, 11, 12, 13, 14])
     assert np.allclose(data[:, 2], data[:, 3], rtol=0.02)

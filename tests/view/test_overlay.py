@@ -41,12 +41,14 @@ def cfg():
 
 @pytest.fixture(scope="module")
 def videos(tmp_path_factory):
-    """(size, frames) of the overlay video and of the plain one, same config and times."""
+    """(size, frames) of the overlay video and of the plain one, same config and times,
+    at the high quality (CRF 15: less H.264 noise between the two layouts)."""
     d = tmp_path_factory.mktemp("overlay")
     out = {}
     for name, extra in (("overlay", ("--overlay", ",".join(ALL))), ("plain", ())):
         path = d / f"{name}.mp4"
-        run_cli("render", WIKI, "--duration", DURATION, "--fps", FPS, "--quiet", *extra,
+        run_cli("render", WIKI, "--duration", DURATION, "--fps", FPS, "--quiet", "-q", "high",
+                *extra,
                 "--out", path, check=True)
         out[name] = read_mp4(path)
     return out
@@ -133,7 +135,9 @@ def test_energy_bars_thermal_grows_total_flat():
     thermal = [h["thermal"] for h in heights]
     total = [h["total"] for h in heights]
     assert thermal[0] == 0 and thermal[0] < thermal[1] < thermal[2]
-    assert max(total) - min(total) <= 1
+    # flat up to Euler-Cromer's own energy wobble, which the bars (about equilibrium,
+    # 1/2 k A^2 tall) show at under 1 %
+    assert max(total) - min(total) <= 0.01 * max(total)
 
 
 def bar_heights(panel: np.ndarray, energy) -> dict[str, int]:
@@ -152,7 +156,7 @@ def bar_heights(panel: np.ndarray, energy) -> dict[str, int]:
 def expected_heights(energy, e) -> dict[str, float]:
     ax = energy.ax
     zero = ax.transData.transform((0, 0))[1]
-    values = energy.values(e)
+    values = np.array(energy.values(e)) / energy.scale
     return {label: abs(ax.transData.transform((0, v))[1] - zero)
             for (label, _), v in zip(ENERGY_BARS, values)}
 
@@ -202,12 +206,13 @@ def test_energy_bars_follow_the_energies(videos, layout, cfg):
     for f, s in zip((0, 3, 5), states(cfg, (0, 3, 5))):
         got = bar_heights(frames[f][:, W:], e)
         want = expected_heights(e, physics.energies(s))
-        for label in ("K", "$U_s$", "$U_g$", "total"):
+        for label in ("K", "U", "total"):
             assert got[label] == pytest.approx(want[label], abs=3), label
         seen.append(got)
-    for label in ("$U_s$", "$U_g$"):
-        assert abs(seen[0][label] - seen[2][label]) > 20          # bars move...
-    assert abs(seen[0]["total"] - seen[2]["total"]) <= 1          # ...the total does not
+    for label in ("K", "U"):                    # t = 0 at the bottom, 0.15 s past equilibrium
+        assert abs(seen[0][label] - seen[1][label]) > 20          # bars move...
+    # ...the total does not, up to Euler-Cromer's energy wobble (1/2 k A^2 tall bars show it)
+    assert abs(seen[0]["total"] - seen[2]["total"]) <= 0.02 * seen[0]["total"]
 
 
 def test_overlay_frame_matches_baseline(videos, cfg, regen):

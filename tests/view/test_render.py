@@ -114,7 +114,8 @@ def test_simulate_csv(tmp_path, wiki_cfg):
     run_cli("simulate", WIKI, "--duration", 1.0, "--out", out, check=True)
     with open(out) as fh:
         rows = list(csv.reader(fh))
-    assert rows[0] == ["t", "x", "y", "z", "px", "py", "pz", "K", "Us", "Ug", "E", "E_thermal"]
+    assert rows[0] == ["t [s]", "x [m]", "y [m]", "z [m]", "px [kg m/s]", "py [kg m/s]",
+                       "pz [kg m/s]", "K [J]", "Us [J]", "Ug [J]", "E [J]", "E_thermal [J]"]
     data = np.array(rows[1:], dtype=float)
     assert len(data) == 101 and data[0, 0] == 0 and data[-1, 0] == pytest.approx(1.0)
     ref = physics.run(build.system(wiki_cfg), 100)

@@ -278,7 +278,10 @@ def test_canvas_defaults_and_camera(vp):
 
 # ---- the renderer ------------------------------------------------------------------------
 
-def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
+def test_a_thousand_spheres_are_one_batch_of_instances_updated_in_place(vp):
+    """A thousand spheres: one actor holding one position, turn, size and colour each
+    (instances of one sphere template, :mod:`springscene.vpython.instanced`), rewritten
+    in place when they move, at a level of detail for their size on screen."""
     from springscene.vpython.draw import Renderer
 
     balls = [vp.sphere(pos=vp.vector(i % 10, i // 10 % 10, i // 100), radius=0.3,
@@ -288,8 +291,9 @@ def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
         first = r.frame()
         actors = list(r.plotter.renderer.actors.values())
         spheres = [b for key, b in r._batches.items() if key[0] == "sphere"]
-        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000 * 842   # 30 x 30
+        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000
         mesh = spheres[0].mesh
+        assert np.allclose(mesh.points[1], [1, 0, 0]) and np.all(mesh["scale"] == 0.6)
         mtime = mesh.GetPoints().GetMTime()
         r.frame()                                       # nothing moved: nothing rewritten
         assert mesh.GetPoints().GetMTime() == mtime
@@ -297,8 +301,9 @@ def test_a_thousand_spheres_are_one_mesh_updated_in_place(vp):
             b.pos = b.pos + vp.vector(0, 0, 0.5)
         r.frame()
         assert spheres[0].mesh is mesh and mesh.GetPoints().GetMTime() > mtime
-        # a few pixels across: fewer slices (level of detail), still one mesh
-        assert mesh.n_points % 1000 == 0 and mesh.n_points < 1000 * 842
+        assert np.allclose(mesh.points[1], [1, 0, 0.5])
+        # a few pixels across: fewer slices than VPython's 30 (level of detail)
+        assert spheres[0].template_key[1] < 30
         assert list(r.plotter.renderer.actors.values()) == actors     # no actor added
         assert first.shape == (400, 640, 3)
     finally:
@@ -352,7 +357,7 @@ def test_syntax_error_and_exit_status(tmp_path):
     assert proc.returncode == 1 and "SyntaxError" in proc.stderr and "line 2" in proc.stderr
     proc = run_cli("vpython", write(tmp_path, "import sys\nsys.exit(3)\n", "e.py"),
                    "--out", tmp_path / "x.mp4")
-    assert proc.returncode == 1 and "status 3" in proc.stderr
+    assert proc.returncode == 3 and "status 3" in proc.stderr      # as Python exits
 
 
 @pytest.mark.parametrize("args, message", [

@@ -1,0 +1,178 @@
+"""springscene's pytest plugin: image regression against stored baselines.
+
+Installed with the package (the ``pytest11`` entry point ``springscene``), it gives a
+test the ``verify_image`` fixture, in the spirit of pytest-pyvista's
+``verify_image_cache``::
+
+    def test_scene(verify_image):
+        cfg = springscene.config.load("wiki.toml")
+        verify_image(springscene.render.still(cfg, 0.25), "wiki_t0.25.png")
+
+- The first run stores the picture as the baseline (with a warning saying where); later
+  runs compare against it (:func:`springscene.view.compare.compare`: at most 0.05 % of
+  the pixels off by more than 24/255 in a channel, mean difference at most 0.2/255;
+  each limit can be given per call).
+- ``pytest --springscene-regen`` writes every picture as its new baseline.
+- On a difference the test fails with the measure, and the new picture and a diff image
+  (the baseline pale, the pixels off in red) are written to a folder the message names:
+  ``--springscene-diffs DIR``, else ``.pytest_cache/d/springscene-diffs``.
+
+A relative baseline name is looked up in the ``springscene_baselines`` ini folder
+(relative to the root folder) when it is set, else in ``baselines/`` beside the test
+file. ``springscene_missing_baseline = fail`` (ini) fails on a missing baseline instead of
+storing it (for CI, where a first run should not pass by storing).
+"""
+
+from __future__ import annotations
+
+import re
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from .outputs import write_png
+from .view.compare import (MAX_MEAN_DIFF, PIXEL_TOLERANCE, TOLERANCE, compare, diff_image,
+                           read_image)
+
+DIFF_FOLDER = "springscene-diffs"
+_configs: list = []      # the running sessions' configs, innermost last (verify() outside fixtures)
+
+
+class BaselineStoredWarning(UserWarning):
+    """A test stored its picture as a new baseline (none existed)."""
+
+
+def pytest_addoption(parser) -> None:
+    group = parser.getgroup("springscene", "springscene image regression")
+    group.addoption("--springscene-regen", action="store_true", dest="springscene_regen",
+                    help="write the pictures verify_image is given as the new baselines")
+    group.addoption("--springscene-diffs", dest="springscene_diffs", metavar="DIR",
+                    help="folder for the new picture and the diff image of a failed "
+                    "comparison (default .pytest_cache/d/springscene-diffs)")
+    parser.addini("springscene_baselines", "folder of the baseline pictures, relative to the "
+                  "root folder (default: baselines/ beside each test file)", default="")
+    parser.addini("springscene_missing_baseline", "store (default) or fail when a baseline "
+                  "is missing", default="store")
+
+
+def pytest_configure(config) -> None:
+    _configs.append(config)
+
+
+def pytest_unconfigure(config) -> None:
+    if config in _configs:
+        _configs.remove(config)
+
+
+def _current():
+    return _configs[-1] if _configs else None
+
+
+def diff_folder(config=None) -> Path:
+    """Where failed comparisons leave their pictures."""
+    config = config if config is not None else _current()
+    if config is None:
+        return Path(DIFF_FOLDER).resolve()
+    given = config.getoption("springscene_diffs", None)
+    if given:
+        return Path(given).resolve()
+    cache = getattr(config, "cache", None)
+    if cache is not None:
+        return Path(cache.mkdir(DIFF_FOLDER))
+    return Path(config.rootpath) / DIFF_FOLDER
+
+
+def regenerating(config=None) -> bool:
+    """Whether ``--springscene-regen`` was given."""
+    config = config if config is not None else _current()
+    return bool(config is not None and config.getoption("springscene_regen", False))
+
+
+def _as_image(image) -> np.ndarray:
+    if isinstance(image, (str, Path)):
+        return read_image(image)
+    image = np.asarray(image)
+    if image.dtype != np.uint8:
+        raise TypeError(f"verify_image: a uint8 picture, not {image.dtype}")
+    return image
+
+
+def _flat_name(baseline: Path, root: Path | None) -> str:
+    """The baseline's name for the diff folder: its path below ``root`` with ``__``."""
+    try:
+        rel = baseline.resolve().relative_to(root) if root is not None else Path(baseline.name)
+    except ValueError:
+        rel = Path(baseline.name)
+    return re.sub(r"[^\w.-]", "_", "__".join(rel.with_suffix("").parts))
+
+
+def verify(image, baseline: str | Path, *, regen: bool | None = None,
+           missing: str = "store", tolerance: float = TOLERANCE,
+           pixel_tolerance: int = PIXEL_TOLERANCE, max_mean: float = MAX_MEAN_DIFF,
+           diffs: str | Path | None = None) -> None:
+    """Compare ``image`` (an array or a picture file) with the picture at ``baseline``.
+
+    Stores it there when ``regen`` (default: ``--springscene-regen``), or when there is
+    none and ``missing`` is "store"; raises AssertionError, having written the picture and
+    its diff image into ``diffs`` (default :func:`diff_folder`), when they differ.
+    """
+    __tracebackhide__ = True
+    baseline = Path(baseline)
+    image = _as_image(image)
+    regen = regenerating() if regen is None else regen
+    if regen or not baseline.exists():
+        if not regen and missing != "store":
+            raise AssertionError(f"no baseline {baseline}; run pytest with --springscene-regen")
+        baseline.parent.mkdir(parents=True, exist_ok=True)
+        write_png(baseline, image)
+        if not regen:
+            warnings.warn(BaselineStoredWarning(f"stored a new baseline {baseline}"),
+                          stacklevel=2)
+        return
+    reference = read_image(baseline)
+    result = compare(image, reference, tolerance=tolerance, pixel_tolerance=pixel_tolerance,
+                     max_mean=max_mean)
+    if result.alike:
+        return
+    folder = Path(diffs) if diffs is not None else diff_folder()
+    folder.mkdir(parents=True, exist_ok=True)
+    config = _current()
+    name = _flat_name(baseline, Path(config.rootpath) if config is not None else None)
+    write_png(folder / f"{name}.png", image[..., :3] if image.ndim == 3 else image)
+    written = f"{folder / name}.png"
+    if result.same_size:
+        write_png(folder / f"{name}-diff.png", diff_image(image, reference, pixel_tolerance))
+        written += f" and {name}-diff.png"
+    raise AssertionError(f"{baseline.name}: {result.summary()}; the new picture: {written} "
+                         f"(pytest --springscene-regen makes it the baseline)")
+
+
+class ImageVerifier:
+    """The ``verify_image`` fixture: ``verify_image(image, "name.png", **limits)``."""
+
+    def __init__(self, request) -> None:
+        self.config = request.config
+        folder = self.config.getini("springscene_baselines")
+        self.folder = (Path(self.config.rootpath) / folder if folder
+                       else Path(request.path).parent / "baselines")
+        self.missing = self.config.getini("springscene_missing_baseline")
+        if self.missing not in ("store", "fail"):
+            raise pytest.UsageError(f"springscene_missing_baseline = {self.missing!r}: "
+                                    "use store or fail")
+
+    def __call__(self, image, baseline: str | Path, **limits) -> None:
+        __tracebackhide__ = True
+        path = Path(baseline)
+        if not path.is_absolute():
+            path = self.folder / path
+        verify(image, path, regen=regenerating(self.config), missing=self.missing,
+               diffs=diff_folder(self.config), **limits)
+
+
+@pytest.fixture
+def verify_image(request) -> ImageVerifier:
+    """Compare a picture with its stored baseline (stored on the first run); see
+    :mod:`springscene.pytest_plugin`."""
+    return ImageVerifier(request)
