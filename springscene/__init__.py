@@ -37,7 +37,6 @@ def _version() -> str:
         return found.group(1) if found else "0+unknown"
 
 
-__version__ = _version()
 
 
 class _ModuleAndFunction(types.ModuleType):
@@ -59,6 +58,9 @@ def _callable(name: str) -> types.ModuleType:
 
 
 def __getattr__(name: str):
+    if name == "__version__":     # read on first use: the start of a command stays short
+        globals()["__version__"] = version = _version()   # (its signal handlers go first)
+        return version
     if name in _MODULE_FUNCTIONS:          # also how `from . import render` first loads it
         return _callable(name)
     if name in _API:
@@ -68,4 +70,4 @@ def __getattr__(name: str):
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_API))
+    return sorted(set(globals()) | set(_API) | {"__version__"})

@@ -35,6 +35,7 @@ from .errors import UserError
 from .results import Analysis, Still, Table, Video, table
 from .science.sweep import SweepResult, parse_omega
 from .settings import Config
+from .view.overlay import parse_overlays
 
 __all__ = ["load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
            "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Config", "UserError"]
@@ -274,7 +275,8 @@ def _in_notebook() -> bool:
 
 def render(cfg: Config | str, out: str | Path, *, duration: float | None = None,
            fps: int | None = None, speed: float | None = None,
-           overlays: str | tuple[str, ...] = (), draft: bool = False, backend: str = "auto",
+           overlays: str | tuple[str, ...] | None = None, draft: bool = False,
+           backend: str = "auto",
            progress: bool | None = None, **options: Any) -> Video:
     """Render the motion to a video file (the suffix of ``out`` chooses the format).
 
@@ -287,8 +289,9 @@ def render(cfg: Config | str, out: str | Path, *, duration: float | None = None,
     duration, fps, speed : optional
         Simulated seconds, frames per second, simulated seconds per video second
         (defaults: the config's ``[render]``).
-    overlays : str or tuple of str
-        ``"time,graph,energy"`` or any subset: a clock, a y(t) graph, energy bars.
+    overlays : str or tuple of str, optional
+        ``"time,graph,energy"`` or any subset: a clock, a y(t) graph, energy bars;
+        ``"none"`` for none. Default: the command line's (a lattice gets its clock).
     draft : bool
         No anti-aliasing (faster).
     backend : {"auto", "egl", "osmesa"}
@@ -315,12 +318,13 @@ def render(cfg: Config | str, out: str | Path, *, duration: float | None = None,
     """
     cfg = _config(cfg)
     if isinstance(overlays, str):
-        overlays = tuple(name.strip() for name in overlays.split(",") if name.strip())
+        overlays = parse_overlays(overlays)
     if progress is None:
         progress = _in_notebook() or sys.stderr.isatty()
     stats = jobs.render(cfg, out, duration=duration, fps=fps, speed=speed, backend=backend,
-                        antialias=not draft, overlays=tuple(overlays), progress=progress,
-                        **options)
+                        antialias=not draft,
+                        overlays=None if overlays is None else tuple(overlays),
+                        progress=progress, **options)
     return Video(stats)
 
 

@@ -21,7 +21,7 @@ import numpy as np
 
 from tqdm.auto import tqdm   # a widget in Jupyter, text on a terminal
 
-from . import build, config
+from . import build, config, progress
 from .errors import UserError
 from .model import physics
 from .model.timeline import frame_steps, play, step_at
@@ -53,7 +53,8 @@ def simulate(cfg: Config, duration: float | None = None):
     n = step_at(cfg.render.duration, cfg.physics.dt, "--duration")
     if cfg.is_lattice:
         return lattice_totals(build.system(cfg), n)
-    return physics.run(build.system(cfg), n)
+    with progress.steps(n, "simulating") as advance:
+        return physics.run(build.system(cfg), n, progress=advance)
 
 
 def lattice_totals(system: physics.System, n_steps: int) -> np.ndarray:
@@ -128,12 +129,23 @@ def lattice_color_range(cfg: Config, system: physics.System | None = None,
 
 # ---- still and video --------------------------------------------------------------------
 
+def step_to(system: physics.System, n: int) -> physics.System:
+    """``system`` stepped ``n`` times, with progress when that is long (:mod:`.progress`)."""
+    with progress.steps(n, "stepping") as advance:
+        if advance is None:
+            return physics.step(system, n)
+        for chunk in np.diff(np.append(np.arange(0, n, 50_000), n)):
+            physics.step(system, int(chunk))
+            advance(int(chunk))
+    return system
+
+
 def still(cfg: Config, time_s: float, out: str | Path | None = None, *,
           backend: str = "auto", antialias: bool = True) -> np.ndarray:
     """The scene at the step nearest ``time_s`` as an (h, w, 3) image; written as PNG to ``out``."""
     path = check_output(out, (".png",)) if out is not None else None
     n = step_at(time_s, cfg.physics.dt)
-    system = physics.step(build.system(cfg), n)
+    system = step_to(build.system(cfg), n)
     with make_scene(cfg, system, antialias=antialias, backend=backend) as scene:
         image = scene.frame()
     if path is not None:

@@ -58,3 +58,33 @@ def require_backend(name: str) -> None:
         if os.environ.get("SPRINGSCENE_REQUIRE_BACKENDS"):
             pytest.fail(f"{name} is required here but its library is missing")
         pytest.skip(f"{name} library not installed")
+
+
+# ---- the reliability suite (tests/reliability) -------------------------------------------
+
+RELIABILITY = Path(__file__).resolve().parent / "reliability"
+
+
+def pytest_collection_modifyitems(config, items):
+    """Every test in tests/reliability is marked ``reliability``: ``pytest -m reliability``
+    runs that suite alone (hostile configs, signals, misbehaving programs, full disks),
+    ``-m "not reliability"`` leaves it out."""
+    for item in items:
+        if RELIABILITY in Path(str(item.fspath)).parents:
+            item.add_marker(pytest.mark.reliability)
+
+
+@pytest.fixture
+def tiny_disk(tmp_path):
+    """A 16 kB tmpfs (a mount needs root: skipped where it cannot be made), unmounted
+    after: room for no command's output."""
+    mount = tmp_path / "tiny"
+    mount.mkdir()
+    proc = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=16k", "tmpfs", str(mount)],
+                          capture_output=True, text=True)
+    if proc.returncode != 0:
+        pytest.skip(f"cannot mount a small tmpfs here: {proc.stderr.strip()}")
+    try:
+        yield mount
+    finally:
+        subprocess.run(["umount", "-l", str(mount)], check=False)

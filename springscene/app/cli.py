@@ -14,7 +14,9 @@ from pathlib import Path
 
 from .. import config, jobs
 from ..errors import OutputError, ProgramError, UserError
+from ..model import timeline
 from ..model.integrators import NAMES
+from ..model.timeline import MAX_STEPS
 from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
 from .compare import add_compare_command, run_compare
@@ -65,6 +67,13 @@ def _physics(sp: argparse.ArgumentParser) -> None:
     sp.add_argument("--integrator", choices=NAMES,
                     help="time integrator (default: the config's, else euler-cromer)")
     sp.add_argument("--dt", type=float, help="time step in s (default: the config's)")
+    _max_steps(sp)
+
+
+def _max_steps(sp: argparse.ArgumentParser) -> None:
+    sp.add_argument("--max-steps", type=int, metavar="N",
+                    help=f"allow runs of up to N physics steps (default {MAX_STEPS:,}; "
+                    "longer runs are refused before they start)")
 
 
 def _add_numbers_commands(sub) -> None:
@@ -124,6 +133,7 @@ def _add_picture_commands(sub) -> None:
     s.add_argument("--prefix", default="", help="put before every file name, and the names "
                    "in figures.wiki (e.g. BallSpring_: no clash on a shared wiki)")
     _renders(s)
+    _max_steps(s)
 
 
 def _add_vpython_command(sub) -> None:
@@ -185,7 +195,8 @@ def _run(args: argparse.Namespace) -> int:
     cfg = config.load(args.config)
     if hasattr(args, "dt"):
         cfg = config.override(cfg, "physics", integrator=args.integrator, dt=args.dt)
-    return _COMMANDS[args.command](cfg, args)
+    with timeline.step_limit(args.max_steps):
+        return _COMMANDS[args.command](cfg, args)
 
 
 def _simulate(cfg: config.Config, args: argparse.Namespace) -> int:

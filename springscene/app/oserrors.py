@@ -14,7 +14,7 @@ from pathlib import Path
 EXIT_WRITE_FAILED = 1
 
 # failures that only a write meets
-_WRITE_ERRNOS = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS}
+_WRITE_ERRNOS = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EROFS, errno.EIO}
 
 # an ``outputs.atomic_path`` temporary: ".NAME.XXXXXXXX.SUFFIX" (tempfile's 8 characters)
 _TEMPORARY = re.compile(r"\.(?P<name>.+)\.[a-z0-9_]{8}(?P<suffix>\.[^.]*)?")

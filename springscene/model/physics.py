@@ -505,10 +505,11 @@ class Trajectory:
         return self.E + self.E_thermal
 
 
-def run(s: System, n_steps: int, node: int | None = None) -> Trajectory:
+def run(s: System, n_steps: int, node: int | None = None, progress=None) -> Trajectory:
     """Record ``node`` (default: the first free node) at t = 0 and after each of ``n_steps`` steps.
 
-    ``s`` is advanced in place.
+    ``s`` is advanced in place. ``progress``, when given, is called with the number of
+    steps done since its last call, every 10,000 steps.
     """
     node = int(s.free[0]) if node is None else node
     spring = np.flatnonzero((s.i == node) | (s.j == node))
@@ -523,6 +524,8 @@ def run(s: System, n_steps: int, node: int | None = None) -> Trajectory:
     for r in range(rows):
         if r:
             step(s)
+            if progress is not None and r % 10_000 == 0:
+                progress(10_000)
         t[r] = s.t
         pos[r] = s.pos[node]
         p[r] = s.p[node]

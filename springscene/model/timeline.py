@@ -7,6 +7,7 @@ t = f speed / fps. Numbers are checked here, and a bad one names its flag.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from typing import Iterator
 
@@ -15,7 +16,8 @@ import numpy as np
 from ..errors import UserError
 from . import physics
 
-MAX_STEPS = 10_000_000    # about 3 minutes of stepping; past it a typo, not a plan
+MAX_STEPS = 10_000_000    # about 4 to 15 minutes of stepping; past it a typo, not a plan
+_limit = [MAX_STEPS]      # what step_at allows now (:func:`step_limit`)
 MAX_FRAMES = 360_000      # two hours at 50 fps
 
 
@@ -30,12 +32,34 @@ def _time(flag: str, value) -> float:
     return float(value)
 
 
+@contextlib.contextmanager
+def step_limit(limit: int | None) -> Iterator[None]:
+    """Within the block, runs of up to ``limit`` steps are allowed (``--max-steps``);
+    None keeps :data:`MAX_STEPS`."""
+    if limit is not None and (isinstance(limit, bool) or not isinstance(limit, int)
+                              or limit < 1):
+        raise UserError(f"--max-steps must be a whole number >= 1, got {limit}")
+    saved = _limit[0]
+    _limit[0] = saved if limit is None else limit
+    try:
+        yield
+    finally:
+        _limit[0] = saved
+
+
+def current_limit() -> int:
+    """The most steps a run may take now (:func:`step_limit`)."""
+    return _limit[0]
+
+
 def step_at(time_s: float, dt: float, flag: str = "--time") -> int:
-    """Index of the step nearest ``time_s`` (>= 0, within :data:`MAX_STEPS`)."""
+    """Index of the step nearest ``time_s`` (>= 0, within the step limit: :data:`MAX_STEPS`
+    unless :func:`step_limit` says otherwise)."""
     time_s = _time(flag, time_s)
-    if time_s / dt > MAX_STEPS:
+    limit = _limit[0]
+    if time_s / dt > limit:
         raise UserError(f"{flag} {time_s:g} is {time_s / dt:.3g} steps of dt = {dt:g} s; "
-                        f"the limit is {MAX_STEPS:,}")
+                        f"the limit is {limit:,} steps (--max-steps N allows more)")
     return int(round(time_s / dt))
 
 

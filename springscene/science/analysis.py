@@ -23,7 +23,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .. import build, config
+from .. import build, config, progress
 from ..model import physics, timeline
 from . import tables, theory
 from .sweep import check_sweepable
@@ -83,8 +83,9 @@ def analyze(cfg: Config, duration: float | None = None) -> dict:
     cfg = config.override(cfg, "render", duration=duration)
     osc = theory.Oscillator.from_config(cfg)
     _check_measurable(cfg, osc, duration)
-    traj = physics.run(build.system(cfg), timeline.step_at(cfg.render.duration, cfg.physics.dt,
-                                                              "--duration"))
+    n = timeline.step_at(cfg.render.duration, cfg.physics.dt, "--duration")
+    with progress.steps(n, "simulating") as advance:
+        traj = physics.run(build.system(cfg), n, progress=advance)
     extra_measured, extra_theory = {}, {}
     plastic = bool(np.any(traj.L0 != traj.L0[0]))
     if plastic:

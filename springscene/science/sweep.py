@@ -109,9 +109,9 @@ def sweep(cfg: Config, omega: np.ndarray, periods: float = 200) -> SweepResult:
     window = WINDOW_PERIODS * slowest
     total = max(periods * slowest, -math.log(SETTLED) / osc.gamma + window)
     n_total = timeline.step_at(total, dt, "--omega/--periods: the run of")
-    if n_total * len(omega) > 50 * timeline.MAX_STEPS:
+    if n_total * len(omega) > 50 * timeline.current_limit():
         raise UserError(f"--omega/--periods: {len(omega)} frequencies x {n_total:,} steps is "
-                        f"more than {50 * timeline.MAX_STEPS:,} spring updates; use fewer")
+                        f"more than {50 * timeline.current_limit():,} spring updates; use fewer")
     n_window = max(int(round(window / dt)), 1)
 
     start = time.perf_counter()

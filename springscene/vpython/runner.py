@@ -210,15 +210,28 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
                                dialect=dialect.name)
     result.images = images + _write_extras(out, result, page, still, film.printed.text(),
                                            canvas_only)
-    result.notes = film.notes + widgets.notes()
-    if timeline.capped_rate is not None:
-        result.notes.append(f"rate({timeline.capped_rate:g}) ran as fast as it goes: each "
-                            "iteration took the time it took to compute (at least "
-                            f"1/{runtime.MAX_RATE:,} s), as in VPython")
-    if ended == "duration" and duration is None:
-        result.notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
-                            "(the default; use --duration or --frames)")
+    result.notes = film.notes + widgets.notes() + _timing_notes(timeline, fps, ended, duration)
     return result
+
+
+def _timing_notes(timeline: runtime.Timeline, fps: int, ended: str,
+                  duration: float | None) -> list[str]:
+    """What the user should know about the run's clock: a rate() too fast to keep, frames
+    that repeat, the default duration."""
+    notes = []
+    if timeline.capped_rate is not None:
+        notes.append(f"rate({timeline.capped_rate:g}) ran as fast as it goes: each "
+                     "iteration took the time it took to compute (at least "
+                     f"1/{runtime.MAX_RATE:,} s), as in VPython")
+    if timeline.repeats:
+        notes.append(f"{timeline.repeats} of {timeline.frames} frames repeat the one "
+                     f"before: the program's rate({timeline.slowest:g}) moves it "
+                     f"{timeline.slowest:g} times a program second, and --fps is {fps} "
+                     "(a lower --fps gives each frame its own picture)")
+    if ended == "duration" and duration is None:
+        notes.append(f"stopped at {DEFAULT_DURATION:g} s of program time "
+                     "(the default; use --duration or --frames)")
+    return notes
 
 
 def _capturer(out: Path, film: Film, images: list[Path]):

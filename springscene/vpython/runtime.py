@@ -58,6 +58,8 @@ class Timeline:
         self.sleeps = 0                  # sleep() calls
         self.last_call: tuple[str, object] = ("", None)  # ("rate", n) or ("sleep", t): why
         self.last_span = Fraction(0)     # the program time the last call moved on by
+        self.repeats = 0                 # frames that show the same scene as the one before
+        self.slowest = None              # the smallest rate(n) that repeated frames
 
     @property
     def seconds(self) -> float:
@@ -72,11 +74,18 @@ class Timeline:
             # so the renders due in this span see one scene: one call stands for them all
             self.on_render()
             self.renders = math.ceil(end * RENDERS_PER_SECOND)
+        taken = 0
         while Fraction(self.frames, self.fps) < end:
             if self.max_frames is not None and self.frames >= self.max_frames:
                 break
             self.take()
             self.frames += 1
+            taken += 1
+        if taken > 1 and self.frames > taken and self.last_call[0] == "rate":
+            # one loop iteration shown in several frames (a sleep() shows a still scene on
+            # purpose; the first frames wait for the start)
+            self.repeats += taken - 1
+            self.slowest = min(self.last_call[1], self.slowest or self.last_call[1])
         self.clock = end
         if self.max_frames is not None and self.frames >= self.max_frames:
             raise Stop

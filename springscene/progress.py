@@ -1,0 +1,29 @@
+"""Progress, with the time left, for long runs: a bar on a terminal, nothing elsewhere.
+
+A run of more than :data:`LONG_RUN` steps (about 20 s of recording the ball's state,
+``physics.run``, on this project's 2-core machine) shows a ``tqdm`` bar on stderr with
+its rate and an estimate of the time left; shorter runs, and runs whose stderr is not a
+terminal (a pipe, CI, a notebook's captured output), show nothing.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import sys
+from typing import Callable, Iterator
+
+LONG_RUN = 200_000     # steps
+
+
+@contextlib.contextmanager
+def steps(total: int, what: str) -> Iterator[Callable[[int], None] | None]:
+    """A callback ``advance(n)`` for ``total`` steps of ``what``, or None when the run is
+    short or stderr is not a terminal (then the caller steps in one go)."""
+    if total < LONG_RUN or not sys.stderr.isatty():
+        yield None
+        return
+    from tqdm.auto import tqdm  # noqa: PLC0415  heavy: tqdm
+
+    with tqdm(total=total, desc=what, unit=" steps", unit_scale=True, leave=False,
+              file=sys.stderr) as bar:
+        yield bar.update

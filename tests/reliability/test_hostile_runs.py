@@ -1,0 +1,202 @@
+"""Every command against what a hostile user (or an unlucky one) does: generated bad
+configs, a full disk, and stop signals at random moments. Whatever happens: the right
+exit status, one line on stderr (no traceback), and nothing left beside the output."""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import random
+import signal
+import subprocess
+import sys
+import tempfile
+import textwrap
+import time
+from pathlib import Path
+
+import pytest
+
+try:
+    import tomllib
+except ModuleNotFoundError:                     # Python 3.10
+    import tomli as tomllib
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from conftest import ROOT, WIKI
+from springscene.app import cli
+
+CHAIN = ROOT / "configs" / "chain.toml"
+BASES = {name: tomllib.loads(path.read_text()) for name, path in
+         (("wiki", WIKI), ("chain", CHAIN))}
+EXAMPLES = int(os.environ.get("SPRINGSCENE_HOSTILE_EXAMPLES", "120"))
+INFO_LINE = "written for VPython"      # the one line `vpython` prints before it runs
+
+
+# ---- generated bad configs ------------------------------------------------------------
+
+def toml_value(v) -> str:
+    """``v`` written as a TOML value (enough for the generated configs)."""
+    if isinstance(v, bool):
+        return "true" if v else "false"
+    if isinstance(v, int):
+        return str(v)
+    if isinstance(v, float):
+        return "nan" if math.isnan(v) else ("inf" if v > 0 else "-inf") if math.isinf(v) \
+            else repr(v)
+    if isinstance(v, str):
+        return json.dumps(v)          # a TOML basic string: JSON's escapes are TOML's
+    if isinstance(v, list):
+        return "[" + ", ".join(toml_value(x) for x in v) + "]"
+    return "{" + ", ".join(f"{json.dumps(k)} = {toml_value(x)}" for k, x in v.items()) + "}"
+
+
+def toml_text(doc: dict) -> str:
+    lines = []
+    for section, table in doc.items():
+        lines.append(f"[{json.dumps(section)}]")
+        lines += [f"{json.dumps(k)} = {toml_value(v)}" for k, v in table.items()]
+    return "\n".join(lines) + "\n"
+
+
+scalars = st.one_of(
+    st.floats(allow_nan=True, allow_infinity=True), st.integers(-10**30, 10**30),
+    st.sampled_from([0, -1, 1e308, -1e308, 1e-308, 5e-324, 2**63, 1e20]),
+    st.text(max_size=40), st.text(min_size=300, max_size=2000), st.booleans())
+values = st.recursive(scalars, lambda inner: st.one_of(
+    st.lists(inner, max_size=4), st.dictionaries(st.text(max_size=6), inner, max_size=3)),
+    max_leaves=8)
+
+
+@st.composite
+def hostile_configs(draw) -> tuple[str, dict]:
+    """A starting config (the page's ball or a chain of atoms) with one to three of its
+    keys given hostile values, or an unknown key or section (names with control
+    characters included)."""
+    name = draw(st.sampled_from(sorted(BASES)))
+    doc = json.loads(json.dumps(BASES[name]))          # a deep copy
+    for _ in range(draw(st.integers(1, 3))):
+        if draw(st.integers(0, 5)) == 0:
+            section = draw(st.sampled_from(sorted(doc)) | st.text(min_size=1, max_size=8))
+            doc.setdefault(section, {})[draw(st.text(min_size=1, max_size=8))] = draw(values)
+        else:
+            section = draw(st.sampled_from(sorted(doc)))
+            if doc[section]:
+                doc[section][draw(st.sampled_from(sorted(doc[section])))] = draw(values)
+    return name, doc
+
+
+@settings(max_examples=EXAMPLES, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
+@given(case=hostile_configs())
+def test_generated_bad_configs_are_one_line_exit_2_and_write_nothing(case, tmp_path, capsys):
+    """Each generated config through `simulate` (every config is checked in full when it
+    is loaded, whatever the command): either it is a fine config and the CSV is written,
+    or exit 2, one line naming what is wrong, and nothing written. Never a traceback."""
+    _, doc = case
+    folder = Path(tempfile.mkdtemp(dir=tmp_path))
+    path = folder / "hostile.toml"
+    path.write_text(toml_text(doc))
+    out = folder / "out.csv"
+    capsys.readouterr()
+    status = cli.main(["simulate", str(path), "--duration", "0.05", "--out", str(out)])
+    err = capsys.readouterr().err
+    assert "Traceback" not in err
+    assert status in (0, 2), err
+    if status == 2:
+        assert len(err.splitlines()) == 1 and err.startswith("springscene: error: "), err
+        assert sorted(p.name for p in folder.iterdir()) == ["hostile.toml"]
+    else:
+        assert out.is_file() and err == ""
+
+
+# ---- a full disk, every command -------------------------------------------------------
+
+PROGRAM = textwrap.dedent("""\
+    from vpython import *
+    ball = sphere(color=color.red)
+    for i in range(200):
+        rate(50)
+        ball.pos.x = 0.01 * i
+""")
+
+
+def _commands(disk: Path, program: Path) -> dict[str, list]:
+    return {
+        "simulate": ["simulate", WIKI, "--out", disk / "t.csv"],
+        "sweep": ["sweep", ROOT / "configs" / "driven.toml", "--omega", "10:14:600",
+                  "--periods", "20", "--out", disk / "c.csv"],
+        "still": ["still", WIKI, "--draft", "--out", disk / "s.png"],
+        "render-mp4": ["render", WIKI, "--duration", "1", "--draft", "--quiet", "--out",
+                       disk / "v.mp4"],
+        "render-gif": ["render", WIKI, "--duration", "1", "--draft", "--quiet", "--out",
+                       disk / "v.gif"],
+        "render-webm": ["render", WIKI, "--duration", "1", "--draft", "--quiet", "--out",
+                        disk / "v.webm"],
+        "figures": ["figures", WIKI, "--draft", "--out", disk / "figs"],
+        "vpython": ["vpython", program, "--draft", "--duration", "1", "--out",
+                    disk / "p.mp4"],
+    }
+
+
+@pytest.mark.parametrize("command", ["simulate", "sweep", "still", "render-mp4", "render-gif",
+                                     "render-webm", "figures", "vpython"])
+def test_every_command_on_a_full_disk_is_one_line_exit_1_and_leaves_nothing(
+        command, tiny_disk, tmp_path):
+    program = tmp_path / "prog.py"
+    program.write_text(PROGRAM)
+    args = _commands(tiny_disk, program)[command]
+    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=300)
+    lines = [line for line in proc.stderr.splitlines() if INFO_LINE not in line]
+    assert proc.returncode == 1, proc.stderr
+    assert len(lines) == 1 and lines[0].startswith("springscene: no space left on device "
+                                                   f"writing {tiny_disk}/"), proc.stderr
+    assert list(tiny_disk.iterdir()) == []               # no file, no folder, no temporary
+
+
+# ---- stop signals at random moments ---------------------------------------------------
+
+SIGNALS = {"SIGINT": 130, "SIGTERM": 143, "SIGHUP": 129}
+MOMENTS = random.Random(16).sample(range(5, 250), 9)     # hundredths of a second
+
+
+@pytest.mark.parametrize("command, sig, moment", [
+    (command, sig, MOMENTS[3 * i + j] / 100)
+    for i, command in enumerate(("render", "figures", "vpython"))
+    for j, sig in enumerate(SIGNALS)])
+def test_a_stop_signal_at_a_random_moment_leaves_nothing(command, sig, moment, tmp_path):
+    """`render`, `figures` (over an existing set) and `vpython`, each sent SIGINT, SIGTERM
+    and SIGHUP at moments drawn once (seeded) from 0.05 to 2.5 s: the signal's status (or
+    0 when the run was already done), one line, and in the output folder only what a
+    finished run leaves (for figures: the old set, untouched)."""
+    program = tmp_path / "prog.py"
+    program.write_text(PROGRAM)
+    out = tmp_path / "out"
+    out.mkdir()
+    args = {"render": ["render", WIKI, "--duration", "2", "--draft", "--quiet", "--out",
+                       out / "v.mp4"],
+            "figures": ["figures", WIKI, "--draft", "--out", out],
+            "vpython": ["vpython", program, "--draft", "--duration", "2", "--out",
+                        out / "p.mp4"]}[command]
+    old = {}
+    if command == "figures":
+        (out / "scene.png").write_bytes(b"the old set")
+        (out / "figures.wiki").write_text("the old gallery")
+        old = {p.name: p.read_bytes() for p in out.iterdir()}
+    proc = subprocess.Popen([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+                            stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
+    time.sleep(moment)
+    proc.send_signal(getattr(signal, sig))
+    _, err = proc.communicate(timeout=300)
+    lines = [line for line in err.splitlines() if INFO_LINE not in line]
+    assert "Traceback" not in err and "Fatal" not in err, err
+    if proc.returncode == 0:                                # finished before the signal
+        return
+    assert proc.returncode == SIGNALS[sig], err
+    assert lines == [f"springscene: interrupted ({sig})"], err
+    left = {p.name: (p.read_bytes() if p.is_file() else None) for p in out.iterdir()}
+    assert left == old, sorted(left)                        # nothing new, nothing hidden
