@@ -15,7 +15,6 @@ from __future__ import annotations
 import importlib
 import re
 import types
-from importlib import metadata
 from pathlib import Path
 
 _API = ("load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
@@ -28,6 +27,8 @@ _MODULE_FUNCTIONS = ("render", "figures")     # submodules that are API function
 def _version() -> str:
     """The installed distribution's version: pyproject.toml's, the one source of truth
     (read from pyproject.toml itself in a checkout that was never installed)."""
+    import importlib.metadata as metadata  # noqa: PLC0415  heavy: 50 ms before the signal handlers
+
     try:
         return metadata.version("springscene")
     except metadata.PackageNotFoundError:
