@@ -28,6 +28,7 @@ from .model import physics
 from .outputs import check_output
 from .science import analysis, matter
 from .science import sweep as sweeps
+from .errors import UserError
 from .settings import Config
 from .vpython.runner import ProgramResult, run_program
 from .vpython.supervise import run_supervised
@@ -112,4 +113,8 @@ def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
     this process (``on_frame`` needs that)."""
     if supervised and options.get("on_frame") is None:
         return run_supervised(program, out, **options)
+    unsupervised = [k for k in ("timeout", "max_memory") if options.pop(k, None) is not None]
+    if unsupervised:
+        raise UserError(f"{', '.join(unsupervised)}: only a supervised run has them "
+                        "(not with on_frame or supervised=False)")
     return run_program(program, out, **options)

@@ -289,6 +289,19 @@ def main(argv: list[str] | None = None) -> int:
     args = _build_parser().parse_args(argv)
     try:
         return _run(args)
+    except Exception as exc:
+        stop = signals.interruption(exc)      # an error while a stop signal cleaned up
+        if stop is None:
+            return _failed(exc, args)
+        return signals.report(stop)
+    except KeyboardInterrupt as exc:      # or a stop signal (signals.Interrupted)
+        return signals.report(exc)
+
+
+def _failed(exc: Exception, args: argparse.Namespace) -> int:
+    """``exc`` as one line (or the program's traceback) and its exit status."""
+    try:
+        raise exc
     except UserError as exc:
         print(f"springscene: error: {one_line(str(exc))}", file=sys.stderr)
         return EXIT_BAD_INPUT
@@ -301,8 +314,6 @@ def main(argv: list[str] | None = None) -> int:
     except BrokenPipeError:          # e.g. `springscene analyze ... | head`
         sys.stderr.close()
         return 0
-    except KeyboardInterrupt as exc:      # or a stop signal (signals.Interrupted)
-        return signals.report(exc)
     except OSError as exc:                # no space, a read-only folder: one line, exit 1
         print(f"springscene: {one_line(oserrors.line(exc, getattr(args, 'out', None)))}",
               file=sys.stderr)

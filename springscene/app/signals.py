@@ -72,7 +72,7 @@ class _State:
         self.raised = None               # a weak reference to the last Interrupted raised
         self.done = False                # reported, or the command returned
         self.resent = False              # the next call is the watchdog's, not a signal's
-        self.watchdog: threading.Thread | None = None
+        self.wake = threading.Event()    # set by the first signal: the watchdog starts
 
 
 _state = _State()
@@ -85,6 +85,10 @@ def install() -> None:
     ignores SIGHUP; a shell's background job, SIGINT)."""
     global _state
     _state = _State()
+    # started here, not in the handler: a thread started from a signal handler would wait
+    # forever for threading's lock if the signal came while the main thread held it
+    threading.Thread(target=_watchdog, args=(_state,), daemon=True,
+                     name="springscene-signals").start()
     for signum in SIGNALS:
         if signal.getsignal(signum) is not signal.SIG_IGN:
             signal.signal(signum, _handler)
@@ -114,7 +118,7 @@ def _handler(signum: int, frame) -> None:
         st.received.append(signum)
         if len(st.received) >= FORCE_AFTER:
             _leave(128 + st.received[0])
-    _start_watchdog(st)
+    st.wake.set()
     if _in_extension_import(frame) or _on_its_way(st):
         return
     raise _new_interruption(st)          # no local name: the frame would keep it alive
@@ -134,15 +138,10 @@ def _on_its_way(st: _State) -> bool:
     return st.raised is not None and st.raised() is not None
 
 
-def _start_watchdog(st: _State) -> None:
-    if st.watchdog is None:
-        st.watchdog = threading.Thread(target=_watchdog, args=(st,), daemon=True,
-                                       name="springscene-signals")
-        st.watchdog.start()
-
-
 def _watchdog(st: _State) -> None:
-    """Simulate the first signal again (no system call is interrupted) until reported."""
+    """Once a signal came, simulate the first one again (no system call is interrupted)
+    until it is reported."""
+    st.wake.wait()
     while True:
         time.sleep(RETRY_S)
         if st.done or st is not _state:

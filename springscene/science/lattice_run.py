@@ -14,7 +14,7 @@ import numpy as np
 
 from .. import build
 from ..errors import UserError
-from ..model import physics
+from ..model import physics, timeline
 from ..model.lattice import Lattice, first_free_layer
 from ..settings import Config
 
@@ -170,9 +170,12 @@ def plan_run(cfg: Config, geo: Geometry, duration: float | None) -> Plan:
     run = _run_length(cfg, duration, needs, notes)
     dt = cfg.physics.dt
     steps = max(1, int(math.ceil(run / dt - 1e-9)))
-    if steps > MAX_STEPS:
+    limit = MAX_STEPS if timeline.current_limit() == timeline.MAX_STEPS \
+        else timeline.current_limit()          # --max-steps given: the user's limit
+    if steps > limit:
         raise UserError(f"{cfg.source}: measuring this needs {steps:,} steps of dt = {dt:g} s "
-                        f"(more than {MAX_STEPS:,}); use a smaller lattice or a larger dt")
+                        f"(more than {limit:,}); use a smaller lattice or a larger dt, "
+                        "or --max-steps N")
     plan = Plan(tuple(what), steps, steps * dt, notes=notes)
     if "speed_of_sound" in what:
         # enough for the pulse, its reflection coming back, and the figure

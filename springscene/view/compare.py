@@ -139,7 +139,8 @@ def read_image(path: str | Path, what: str = "") -> np.ndarray:
                 return (np.asarray(im, np.uint32) >> 8).astype(np.uint8)
             return np.asarray(im.convert("RGBA" if "A" in im.getbands() or "transparency"
                                          in im.info else "RGB"))
-    except (UnidentifiedImageError, OSError, ValueError, SyntaxError) as exc:
+    except (UnidentifiedImageError, OSError, ValueError, SyntaxError,
+            Image.DecompressionBombError, MemoryError) as exc:
         raise UserError(f"{where}: not a picture Pillow can read "
                         f"({type(exc).__name__}: {str(exc)[:80]})") from None
 

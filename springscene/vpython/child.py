@@ -27,7 +27,7 @@ from pathlib import Path
 
 from ..errors import ProgramError, UserError
 from . import runtime
-from .runner import ProgramExit, run_program
+from .runner import ProgramExit, _user_traceback, run_program
 
 PROGRESS_EVERY = 0.25       # seconds of wall clock between progress reports
 PR_SET_PDEATHSIG = 1
@@ -136,8 +136,10 @@ def run(reporter: Reporter, request: dict) -> None:
         reporter.end("oserror", errno=exc.errno, strerror=exc.strerror,
                       reason=getattr(exc, "reason", None),
                       filename=str(exc.filename) if exc.filename else None)
-    except KeyboardInterrupt:
-        reporter.end("interrupted")
+    except KeyboardInterrupt as exc:
+        # the program's own (springscene's Ctrl-C goes to the parent, which kills this
+        # process group): its error, with its traceback, as Python would show it
+        reporter.end("program", message=_user_traceback(exc))
     except Exception:                       # a fault in springscene itself
         reporter.end("internal", message=traceback.format_exc().rstrip("\n"))
     else:

@@ -424,6 +424,9 @@ class Renderer:
             batch.lod_view = now
             if key[0] == "sphere":
                 redraw = self._sphere_slices(*lod[1:]) != lod[0]
+                if not redraw:      # a camera now inside an opaque sphere sees its inside
+                    helix_batch.cull_back_faces(batch, self._style(key), self.view, lod[1],
+                                                lod[2].max(axis=1) / 2)
             else:
                 redraw = helix_batch.detail_changed(batch, self.view, self.antialias)
             if redraw:

@@ -143,18 +143,9 @@ def place(t: _Template, pos, R, length, radius, wire) -> tuple[np.ndarray, np.nd
     return world.reshape(-1, 3), np.matmul(t.normal_basis, cn).reshape(-1, 3)
 
 
-_COLORS: dict = {}     # the last helices' vertex colours: the same every frame, mostly
-
-
 def _vertex_colors(colors: np.ndarray, size: int) -> np.ndarray:
-    """RGB (uint8) of ``size`` vertices per helix of ``colors`` (M, 3) in 0..1; the
-    array made last time when they are the same (no colour upload then either)."""
-    rgb8 = np.clip(np.rint(colors * 255), 0, 255).astype(np.uint8)
-    key = (size, rgb8.shape, rgb8.tobytes())
-    if key not in _COLORS:
-        _COLORS.clear()
-        _COLORS[key] = np.repeat(rgb8, size, axis=0)
-    return _COLORS[key]
+    """RGB (uint8) of ``size`` vertices per helix of ``colors`` (M, 3) in 0..1."""
+    return np.repeat(np.clip(np.rint(colors * 255), 0, 255).astype(np.uint8), size, axis=0)
 
 
 def helix_arrays(objs) -> dict:

@@ -162,39 +162,50 @@ def _start(request: dict) -> subprocess.Popen:
 
 def _supervise(child: subprocess.Popen, watch: Watch, on_dialect) -> dict:
     """Read the child's reports until it has ended; its last report (or none) with its
-    exit status under ``"process_status"``."""
-    buffer, report, fd, status = b"", None, child.report_fd, None
+    exit status under ``"process_status"``. Once the child has ended, what it wrote and
+    this loop had not read yet is read to the end (a report written just before it
+    exited is not lost)."""
+    state = {"buffer": b"", "report": None}
+    fd, status = child.report_fd, None
     try:
         while status is None:
             if fd is not None and select.select([fd], [], [], POLL)[0]:
-                data = os.read(fd, 1 << 16)
-                if not data:
-                    os.close(fd)
-                    fd = None
-                buffer += data
-                *lines, buffer = buffer.split(b"\n")
-                for message in map(_message, lines):
-                    if message["kind"] == "progress":
-                        if report is None:
-                            watch.progress(message)
-                    elif message["kind"] == "dialect":
-                        watch.dialect = message["name"]
-                        if on_dialect is not None:
-                            on_dialect(types.SimpleNamespace(name=message["name"],
-                                                             kind=message["dialect_kind"]))
-                    elif report is None:
-                        report = message
-                        if message.get("progress", {}).get("started"):
-                            watch.progress(message["progress"])
-                        watch.reported = time.monotonic()
+                fd = _read(fd, state, watch, on_dialect)
             elif fd is None:
                 time.sleep(POLL)
-            status = _check(child, watch, report)
+            status = _check(child, watch, state["report"])
+        while fd is not None and select.select([fd], [], [], 0)[0]:
+            fd = _read(fd, state, watch, on_dialect)
     finally:
         if fd is not None:
             os.close(fd)
         _kill(child)
-    return {**(report or {}), "process_status": status}
+    return {**(state["report"] or {}), "process_status": status}
+
+
+def _read(fd: int, state: dict, watch: Watch, on_dialect) -> int | None:
+    """One read of the report pipe, its whole lines handled; None once it is closed."""
+    data = os.read(fd, 1 << 16)
+    if not data:
+        os.close(fd)
+        fd = None
+    state["buffer"] += data
+    *lines, state["buffer"] = state["buffer"].split(b"\n")
+    for message in map(_message, lines):
+        if message["kind"] == "progress":
+            if state["report"] is None:
+                watch.progress(message)
+        elif message["kind"] == "dialect":
+            watch.dialect = message["name"]
+            if on_dialect is not None:
+                on_dialect(types.SimpleNamespace(name=message["name"],
+                                                 kind=message["dialect_kind"]))
+        elif state["report"] is None:
+            state["report"] = message
+            if message.get("progress", {}).get("started"):
+                watch.progress(message["progress"])
+            watch.reported = time.monotonic()
+    return fd
 
 
 def _message(line: bytes) -> dict:
@@ -232,13 +243,14 @@ def _check(child: subprocess.Popen, watch: Watch, report: dict | None) -> int | 
 
 
 def _kill(child: subprocess.Popen) -> None:
-    """End the child and its process group at once, and reap it."""
-    if child.returncode is not None:
-        return
+    """End the child and its process group at once (what the program started in it too,
+    even when the child itself has already ended), and reap the child."""
     try:
         os.killpg(child.pid, signal.SIGKILL)
-    except ProcessLookupError:
+    except (ProcessLookupError, PermissionError):
         pass
+    if child.returncode is not None:
+        return
     try:
         _, wait, _ = os.wait4(child.pid, 0)
         child.returncode = os.waitstatus_to_exitcode(wait)
@@ -258,8 +270,8 @@ def _finish(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResul
         raise UserError(report["message"])
     if kind == "oserror":                # a write that failed: named as the user's file
         raise _output_error(report, out)
-    if kind == "interrupted":
-        raise KeyboardInterrupt
+    if kind == "interrupted":          # (a child of an older springscene)
+        raise ProgramError(f"{watch.program}: the program raised KeyboardInterrupt")
     if kind == "internal":              # a fault in springscene: its traceback, for a report
         print(report["message"], file=sys.stderr)
         raise RunEnded(1, f"springscene: internal error running {watch.program} (above)")
@@ -286,12 +298,14 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
 
     images = [placed(p) for p in report["images"]]
     page = placed(report["page"])
-    for target in images + ([page] if page else []) + [out]:
-        source = folder / target.name
-        if not source.is_file():
+    targets = images + ([page] if page else []) + [out]
+    for target in targets:
+        if not (folder / target.name).is_file():
             raise RunEnded(1, f"springscene: {watch.program}: the run reported "
                               f"{target.name} finished but did not write it")
-        os.replace(source, target)
+    with _signals_held():               # all of them in place, or (SIGKILL aside) none
+        for target in targets:
+            os.replace(folder / target.name, target)
     notes = list(report["notes"])
     if report.get("threads"):
         notes.append(f"the program left {_threads(report['threads'])} running after its "
@@ -301,6 +315,20 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
                          size=tuple(report["size"]) if report["size"] else None,
                          dialect=report["dialect"], page=page, images=images, notes=notes,
                          peak_memory=watch.peak)
+
+
+@contextlib.contextmanager
+def _signals_held():
+    """SIGINT, SIGTERM and SIGHUP held back (delivered after the block)."""
+    stops = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
+    held = threading.current_thread() is threading.main_thread()
+    if held:
+        saved = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
+    try:
+        yield
+    finally:
+        if held:
+            signal.pthread_sigmask(signal.SIG_SETMASK, saved)
 
 
 def _threads(names: list[str]) -> str:
