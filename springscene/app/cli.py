@@ -30,6 +30,7 @@ from ..vpython.supervise_report import size_text
 
 EXIT_BAD_INPUT = 2
 EXIT_PROGRAM_ERROR = 1     # the user's VPython program raised
+MAX_LINE = 1000            # characters of a message line (a long quoted name is cut)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -279,7 +280,11 @@ def _vpython(args: argparse.Namespace) -> int:
 def one_line(message: str) -> str:
     """``message`` on one line: a newline or other control character that came from the
     user's input (a TOML section name, a file name) is shown escaped, as Python writes it."""
-    return "".join(c if c.isprintable() else repr(c)[1:-1] for c in message)
+    line = "".join(c if c.isprintable() else repr(c)[1:-1] for c in message)
+    if len(line) > MAX_LINE:         # a name or value 100 kB long (an unknown key's name)
+        line = f"{line[:MAX_LINE // 2]} ... ({len(line) - MAX_LINE:,} characters left out) " \
+               f"... {line[-MAX_LINE // 2:]}"
+    return line
 
 
 def main(argv: list[str] | None = None) -> int:

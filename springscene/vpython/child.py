@@ -105,9 +105,35 @@ def _die_with_parent(parent: int) -> None:
         os._exit(1)
 
 
-def _done(reporter: Reporter, result) -> None:
+def _watch_reads(folder: Path) -> set[str]:
+    """The files in ``folder`` (the output's folder) that this process opens to read, from
+    now on (an audit hook: the program's ``open`` calls among them): the parent will not
+    write an output over one of them."""
+    read: set[str] = set()
+    folder = os.path.realpath(folder)
+
+    def hook(event: str, args) -> None:
+        if event != "open" or len(read) > 10_000 or isinstance(args[0], int):
+            return
+        mode, flags = args[1], args[2] or 0
+        writes = any(c in mode for c in "wax+") if isinstance(mode, str) \
+            else flags & (os.O_WRONLY | os.O_RDWR)
+        if not writes:
+            try:
+                path = os.path.realpath(os.fsdecode(args[0]))
+            except (TypeError, ValueError):
+                return
+            if os.path.dirname(path) == folder:
+                read.add(path)
+
+    sys.addaudithook(hook)
+    return read
+
+
+def _done(reporter: Reporter, result, read: set[str]) -> None:
     """The finished result, once the files are complete (the parent moves them)."""
     reporter.end("done", path=str(result.path), frames=result.frames, fps=result.fps,
+                 read=sorted(read),
                   program_seconds=result.program_seconds, ended=result.ended,
                   size=list(result.size) if result.size else None, dialect=result.dialect,
                   page=str(result.page) if result.page else None,
@@ -118,6 +144,7 @@ def run(reporter: Reporter, request: dict) -> None:
     """Run the request and report how it ended."""
     program, out = request.pop("program"), request.pop("out")
     request["overlays"] = tuple(request.get("overlays", ()))
+    read = _watch_reads(Path(out).parent.parent)     # out is in the private folder
 
     def on_frame(index: int, image) -> None:       # the parent knows where a death came
         reporter.send("progress", **progress(runtime.current(), None), taken=index + 1)
@@ -143,7 +170,7 @@ def run(reporter: Reporter, request: dict) -> None:
     except Exception:                       # a fault in springscene itself
         reporter.end("internal", message=traceback.format_exc().rstrip("\n"))
     else:
-        _done(reporter, result)
+        _done(reporter, result, read)
 
 
 def main(argv: list[str] | None = None) -> int:

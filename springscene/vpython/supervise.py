@@ -299,6 +299,11 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
     images = [placed(p) for p in report["images"]]
     page = placed(report["page"])
     targets = images + ([page] if page else []) + [out]
+    read = set(report.get("read", ()))
+    for target in targets:
+        if os.path.realpath(target) in read:
+            raise UserError(f"--out {out}: the program read {target.name}; writing there "
+                            "would overwrite it (choose another name)")
     for target in targets:
         if not (folder / target.name).is_file():
             raise RunEnded(1, f"springscene: {watch.program}: the run reported "

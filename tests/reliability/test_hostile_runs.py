@@ -203,3 +203,34 @@ def test_a_stop_signal_at_a_random_moment_leaves_nothing(command, sig, moment, t
     assert lines == [f"springscene: interrupted ({sig})"], err
     left = {p.name: (p.read_bytes() if p.is_file() else None) for p in out.iterdir()}
     assert left == old, sorted(left)                        # nothing new, nothing hidden
+
+
+# ---- inputs never overwritten, messages bounded ----------------------------------------
+
+def test_an_output_over_a_file_the_program_read_is_refused_and_the_file_kept(tmp_path):
+    """The supervised run knows the files in the output's folder the program opened to
+    read; it writes no output over one of them (exit 2, one line, nothing moved)."""
+    data = tmp_path / "data.png"
+    data.write_bytes(b"the user's data")
+    prog = tmp_path / "reads.py"
+    prog.write_text("from vpython import *\n"
+                    "with open('data.png', 'rb') as f:\n    n = len(f.read())\n"
+                    "sphere(radius=n / 10)\n")
+    proc = subprocess.run([sys.executable, "-m", "springscene.app", "vpython", str(prog),
+                           "--no-page", "--draft", "--out", str(data)], cwd=tmp_path,
+                          capture_output=True, text=True, timeout=300)
+    lines = [line for line in proc.stderr.splitlines() if INFO_LINE not in line]
+    assert proc.returncode == 2
+    assert lines == [f"springscene: error: --out {data}: the program read data.png; "
+                     "writing there would overwrite it (choose another name)"]
+    assert data.read_bytes() == b"the user's data"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["data.png", "reads.py"]
+
+
+def test_a_huge_name_in_a_message_is_cut_to_keep_the_line_readable(tmp_path, capsys):
+    bad = tmp_path / "long.toml"
+    bad.write_text(WIKI.read_text().replace("[scene]", f'[scene]\n"{"k" * 100_000}" = 1', 1))
+    assert cli.main(["simulate", str(bad), "--out", str(tmp_path / "t.csv")]) == 2
+    err = capsys.readouterr().err
+    assert len(err.splitlines()) == 1 and len(err) < cli.MAX_LINE + 200
+    assert "characters left out" in err
