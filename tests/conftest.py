@@ -9,6 +9,13 @@ from pathlib import Path
 
 import pytest
 
+# matplotlib's font cache for this venv alone: ~/.cache/matplotlib is shared by every venv
+# of a user, and one made by another venv's matplotlib (the CI legs') lists other font
+# files, so the figures' text came out in other glyphs (tests/baselines/figures/)
+os.environ.setdefault("MPLCONFIGDIR", str(Path(sys.prefix) / "mplconfig"))
+import matplotlib.font_manager  # noqa: E402,F401  the cache built here, once, not in a
+                                # command under test (its "building the font cache" line)
+
 if sys.version_info < (3, 11):    # the tests read TOML with tomllib; tomli is the same parser
     import tomli
     sys.modules.setdefault("tomllib", tomli)
