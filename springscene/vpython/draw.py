@@ -36,7 +36,7 @@ from .instanced import InstancedBatch
 # template starts at its pos, a sphere's and box's is centred on it)
 TEMPLATES = {"sphere": shapes.sphere, "box": shapes.box, "cylinder": shapes.cylinder,
              "cone": shapes.cone, "pyramid": shapes.pyramid}
-# level of detail: (slices, smallest on-screen radius in px that gets them)
+# level of detail: a sphere's slices by the sagitta of its outline on screen (sphere_slices)
 SPHERE_STEPS = (shapes.SPHERE_SLICES, 24, 20, 16, 14, 12, 10, 8, 6)   # slices, most first
 SPHERE_LOD_PX = 0.1   # px: the largest sagitta of a sphere's outline
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
