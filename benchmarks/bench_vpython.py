@@ -24,6 +24,7 @@ Where AtomicSolid's frame goes, part by part: ``benchmarks/bench_render_cost.py`
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
 import tempfile
@@ -88,23 +89,19 @@ def batched(lod: bool = True) -> float:
     from springscene.vpython import draw
     from springscene.vpython.draw import Renderer
 
-    saved = draw.SPHERE_STEPS
-    if not lod:
-        draw.SPHERE_STEPS = (30,)
-
-    vp.reset()
-    balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
-             for p in _grid(N_SPHERES)]
-    r = Renderer(vp.scene)
-    r.frame()
-    start = time.perf_counter()
-    for _ in range(FRAMES):
-        for b in balls:
-            b.pos = b.pos + vp.vector(0, 0, 0.01)
+    with contextlib.nullcontext() if lod else draw.full_detail():
+        vp.reset()
+        balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
+                 for p in _grid(N_SPHERES)]
+        r = Renderer(vp.scene)
         r.frame()
-    seconds = time.perf_counter() - start
-    r.close()
-    draw.SPHERE_STEPS = saved
+        start = time.perf_counter()
+        for _ in range(FRAMES):
+            for b in balls:
+                b.pos = b.pos + vp.vector(0, 0, 0.01)
+            r.frame()
+        seconds = time.perf_counter() - start
+        r.close()
     return seconds
 
 
@@ -139,18 +136,18 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path) -> floa
                           f"scene.width = {size[0]}; scene.height = {size[1]}", 1)
     prog = tmp / program.name
     prog.write_text(src)
-    saved = helix_batch.LOD_PX, draw.SPHERE_STEPS, helix_batch.cull_back_faces
+    saved = helix_batch.cull_back_faces
     if not lod:
-        helix_batch.LOD_PX, draw.SPHERE_STEPS = 0.0, (30,)
         helix_batch.cull_back_faces = lambda *args: None
     times: list[float] = []
     random.seed(1)
     try:
-        run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
-                    page=False, canvas_only=True,
-                    on_frame=lambda i, image: times.append(time.perf_counter()))
+        with contextlib.nullcontext() if lod else draw.full_detail():
+            run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
+                        page=False, canvas_only=True,
+                        on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
-        helix_batch.LOD_PX, draw.SPHERE_STEPS, helix_batch.cull_back_faces = saved
+        helix_batch.cull_back_faces = saved
     steady = times[3:]
     return (len(steady) - 1) / (steady[-1] - steady[0])
 

@@ -81,13 +81,12 @@ def pytest_collection_modifyitems(config, items):
             item.add_marker(pytest.mark.reliability)
 
 
-@pytest.fixture
-def tiny_disk(tmp_path):
-    """A 16 kB tmpfs (a mount needs root: skipped where it cannot be made), unmounted
-    after: room for no command's output."""
-    mount = tmp_path / "tiny"
+def small_disk(tmp_path: Path, size: str):
+    """A tmpfs of ``size`` (``16k``) under ``tmp_path``, as a generator for a fixture: a
+    mount needs root, so the test is skipped where it cannot be made; unmounted after."""
+    mount = tmp_path / f"disk-{size}"
     mount.mkdir()
-    proc = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=16k", "tmpfs", str(mount)],
+    proc = subprocess.run(["mount", "-t", "tmpfs", "-o", f"size={size}", "tmpfs", str(mount)],
                           capture_output=True, text=True)
     if proc.returncode != 0:
         pytest.skip(f"cannot mount a small tmpfs here: {proc.stderr.strip()}")
@@ -95,3 +94,9 @@ def tiny_disk(tmp_path):
         yield mount
     finally:
         subprocess.run(["umount", "-l", str(mount)], check=False)
+
+
+@pytest.fixture
+def tiny_disk(tmp_path):
+    """A 16 kB tmpfs: room for no command's output."""
+    yield from small_disk(tmp_path, "16k")

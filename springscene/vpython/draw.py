@@ -19,8 +19,10 @@ canvas (:mod:`.page_frame`), not in it.
 
 from __future__ import annotations
 
+import contextlib
 import math
 from collections import defaultdict
+from typing import Iterator
 
 import numpy as np
 
@@ -75,6 +77,20 @@ def sphere_slices(radius_px: float) -> int:
     12 px, 14 from 6 px) put 0.39 % of its pixels off, the image tolerance being 0.05 %.
     """
     return helix_batch.steps_for(radius_px, SPHERE_STEPS, SPHERE_LOD_PX)
+
+
+@contextlib.contextmanager
+def full_detail() -> Iterator[None]:
+    """Within the block, helices and spheres at VPython's own detail (60 chords a coil,
+    16 sides, 30 slices) whatever their size: what the level of detail is measured
+    against (tests, ``benchmarks/``)."""
+    global SPHERE_STEPS
+    saved = helix_batch.LOD_PX, SPHERE_STEPS
+    helix_batch.LOD_PX, SPHERE_STEPS = 0.0, (shapes.SPHERE_SLICES,)
+    try:
+        yield
+    finally:
+        helix_batch.LOD_PX, SPHERE_STEPS = saved
 
 
 def object_mesh(obj, uv: bool = False):
@@ -337,16 +353,14 @@ class Renderer:
             batch.objs, batch.lod, batch.lod_view = objs, (slices, pos, size), self._view_key()
         if isinstance(batch, InstancedBatch):
             batch.set_instances(template_, (key[0], slices), pos, R, size, _rgb(color), style)
-            if key[0] == "sphere":
-                helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
-            return
-        points, normals = placement.place(template_, pos, R, size)
-        n = len(template_.points)
-        colors = np.repeat(_rgb(color), n, axis=0)
-        signature = ("tmpl", len(objs), slices)
-        cells = None if signature == batch.signature else \
-            placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
-        batch.set(points, normals, colors, cells, signature, style)
+        else:
+            points, normals = placement.place(template_, pos, R, size)
+            n = len(template_.points)
+            colors = np.repeat(_rgb(color), n, axis=0)
+            signature = ("tmpl", len(objs), slices)
+            cells = None if signature == batch.signature else \
+                placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
+            batch.set(points, normals, colors, cells, signature, style)
         if key[0] == "sphere":
             helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
 

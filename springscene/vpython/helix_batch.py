@@ -202,12 +202,8 @@ def mesh(objs, view=None, triangles: bool = True, full: bool = False,
     a = helix_arrays(objs) if arrays is None else arrays
     if not len(a["length"]):
         return None
-    groups: dict[tuple, list[int]] = {}
-    for i, shape in enumerate(zip(a["coils"], a["ccw"])):
-        groups.setdefault(shape, []).append(i)
     parts, start = [], 0
-    for (coils, ccw), idx in groups.items():
-        idx = np.array(idx)
+    for (coils, ccw), idx in _groups(a).items():
         chords, sides = detail(a, idx, view, full)
         t = template(coils, ccw, chords, sides)
         points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
@@ -265,12 +261,18 @@ def detail_changed(batch, view, full: bool) -> bool:
     """Whether ``batch``'s helices (drawn by :func:`draw`) need another level of detail
     for ``view``: any group's chords or sides differ from those drawn."""
     a = batch.lod
+    drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
+    return any(detail(a, idx, view, full) != drawn.get(shape)
+               for shape, idx in _groups(a).items())
+
+
+def _groups(a: dict) -> dict[tuple, np.ndarray]:
+    """The helices of :func:`helix_arrays` ``a`` by shape, (coils, ccw): their indices, in
+    first-seen order (a batch's groups and its signature's)."""
     groups: dict[tuple, list[int]] = {}
     for i, shape in enumerate(zip(a["coils"], a["ccw"])):
         groups.setdefault(shape, []).append(i)
-    drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
-    return any(detail(a, np.array(idx), view, full) != drawn.get(shape)
-               for shape, idx in groups.items())
+    return {shape: np.array(idx) for shape, idx in groups.items()}
 
 
 THIN_WIRE_PX = 4.0     # px: a wire radius on screen below which its back faces are culled

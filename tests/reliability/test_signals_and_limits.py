@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI, run_cli, small_disk
 
 from springscene import config
 from springscene.app import oserrors, signals
@@ -285,14 +285,7 @@ def test_an_interruption_carries_its_signal_and_exit_status():
 @pytest.fixture
 def full_disk(tmp_path):
     """A 48 kB tmpfs (root only): room for a small CSV, not for a trajectory or a set."""
-    mount = tmp_path / "disk"
-    mount.mkdir()
-    proc = subprocess.run(["mount", "-t", "tmpfs", "-o", "size=48k", "tmpfs", str(mount)],
-                          capture_output=True, text=True)
-    if proc.returncode != 0:
-        pytest.skip(f"cannot mount a small tmpfs here: {proc.stderr.strip()}")
-    yield mount
-    subprocess.run(["umount", str(mount)], check=True)
+    yield from small_disk(tmp_path, "48k")
 
 
 def test_a_full_disk_is_one_line_and_leaves_nothing(full_disk):

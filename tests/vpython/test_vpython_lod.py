@@ -9,6 +9,7 @@ small helix gets fewer chords and sides, the fewest whose polygons stay within
 
 from __future__ import annotations
 
+import contextlib
 import math
 
 import numpy as np
@@ -122,13 +123,7 @@ def test_lod_mesh_stays_near_the_full_one():
     assert np.all(full[0].min(0) >= lo - 1e-9) and np.all(full[0].max(0) <= hi + 1e-9)
 
 
-def _full_detail(monkeypatch) -> None:
-    """VPython's own 60 x 16 helices and 30-slice spheres, whatever their size."""
-    monkeypatch.setattr(helix_batch, "LOD_PX", 0.0)
-    monkeypatch.setattr(draw, "SPHERE_STEPS", (draw.SPHERE_STEPS[0],))
-
-
-def test_renderer_draws_a_lattice_of_helices_in_one_batch(monkeypatch):
+def test_renderer_draws_a_lattice_of_helices_in_one_batch():
     """144 helices, one actor, drawn (draft) from the first frame at the detail for their
     size: the camera is placed before anything is drawn. Close to VPython's full detail:
     these helices (4 px in coil radius, a wire under a pixel) have edges a few
@@ -150,8 +145,8 @@ def test_renderer_draws_a_lattice_of_helices_in_one_batch(monkeypatch):
 
     lod, detail = lattice_picture()
     assert detail != (60, 16)
-    _full_detail(monkeypatch)
-    full, full_detail = lattice_picture()
+    with draw.full_detail():
+        full, full_detail = lattice_picture()
     assert full_detail == (60, 16)
     bad, mean = compare(lod, full)
     assert full.any() and bad <= 0.002 and mean <= MAX_MEAN_DIFF, (bad, mean)
@@ -277,9 +272,7 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, mo
     outside it. Anti-aliased they are at full detail."""
 
     def picture(full: bool):
-        with pytest.MonkeyPatch.context() as mp:
-            if full:
-                _full_detail(mp)
+        with draw.full_detail() if full else contextlib.nullcontext():
             vp.reset()
             vp.scene.width, vp.scene.height = size
             _lattice(2)
