@@ -191,11 +191,13 @@ class Extents:
         self.c = 0.0
         self.last = (-1.0, -1.0)
         self.range: float | None = None
+        self.blocks: dict[str, _Block] = {}  # kind -> solids measured in columns
 
     def update(self, cv) -> float | None:
         """The range after one render's pass over the canvas's visible objects (None
         when there is nothing to bound yet)."""
-        if len(self.entries) > 2 * len(cv._objects) + 64:
+        if len(self.entries) + sum(len(b.ids) for b in self.blocks.values()) \
+                > 2 * len(cv._objects) + 64:
             self._forget(cv._objects)
         center, c = cv.center._xyz(), 1.0 / math.tan(cv.fov / 2)
         if (center, c) != (self.center, self.c):
@@ -211,11 +213,15 @@ class Extents:
             self.last = (zx, zy)
         return self.range
 
-    def _measure(self, objs) -> list[tuple[float, float]]:
-        """Each object's (zx, zy): kept ones as they are, changed ones measured anew."""
-        zs, todo = [], {}
+    def _measure(self, objs) -> list:
+        """Each object's (zx, zy): kept ones as they are, changed ones measured anew
+        (solids by kind in :class:`_Block` columns, the others one by one)."""
+        zs, todo, bulk = [], {}, {}
         for o in objs:
             kind = o._kind
+            if kind in BULK:
+                bulk.setdefault(kind, []).append(o)
+                continue
             if kind == "curve":
                 z = self._curve(o)
             elif kind == "points":
@@ -233,6 +239,12 @@ class Extents:
         for kind, items in todo.items():
             for (o, key), box in zip(items, _boxes(kind, [o for o, _ in items])):
                 zs.append(self._store(o, key, box))
+        for kind in set(self.blocks) | set(bulk):
+            block = self.blocks.get(kind) or _Block.empty()
+            self.blocks[kind] = block = block.measured(kind, bulk.get(kind, []))
+            z = block.z_shown(self.center, self.c)
+            if len(z):
+                zs.append(z.max(axis=0).tolist())
         return zs
 
     def _store(self, o, key, box) -> list:
@@ -311,6 +323,119 @@ class Extents:
         alive = {id(o) for o in objects}
         self.entries = {k: e for k, e in self.entries.items() if k in alive}
         self.seen = {k: v for k, v in self.seen.items() if k in alive}
+        self.blocks = {k: b.keep(alive) for k, b in self.blocks.items()}
+
+
+BULK = ("box", "sphere", "ring", "cylinder", "cone", "pyramid", "helix")
+
+
+def digest(values: np.ndarray) -> np.ndarray:
+    """A 64-bit FNV-1a-style digest of each row of floats (M, k): two rows that differ
+    in any bit differ in digest but for a chance of 2**-64 a change."""
+    bits = np.ascontiguousarray(values, dtype=float).view(np.uint64)
+    h = np.full(len(bits), 0xCBF29CE484222325, dtype=np.uint64)
+    prime = np.uint64(0x100000001B3)
+    for j in range(bits.shape[1]):
+        h ^= bits[:, j]
+        h *= prime
+        h ^= h >> np.uint64(29)
+    return h
+CHUNK = 4096          # objects measured at a time (:meth:`_Block.measured`)
+
+
+class _Block:
+    """The boxes of every solid of one kind measured so far, in columns: per object its
+    id, a digest of what its box depends on (pos, axis, up, size: :func:`digest`), its
+    box (GlowScript's extent, only ever widened) and whether it was shown at the last
+    pass: 73 bytes an object where a dict of tuples held about 700 (100,000 spheres:
+    7 MB, not 70). An object not shown keeps its row (its extent comes back with it),
+    until it leaves the canvas (:meth:`Extents._forget`)."""
+
+    def __init__(self, objs: list, ids, keys, boxes, shown) -> None:
+        self.objs, self.ids, self.keys, self.boxes, self.shown = objs, ids, keys, boxes, shown
+
+    @classmethod
+    def empty(cls) -> "_Block":
+        return cls([], np.zeros(0, np.int64), np.zeros(0, np.uint64), np.zeros((0, 2, 3)),
+                   np.zeros(0, bool))
+
+    def measured(self, kind: str, objs: list) -> "_Block":
+        """This block after a pass that shows ``objs``: their rows kept where nothing
+        changed, widened by their new box where something did, new ones added. Worked
+        through in chunks of :data:`CHUNK` objects, so the temporary arrays stay small
+        (whole, 100,000 spheres left 76 MB in the allocator's pools)."""
+        n = len(objs)
+        ids = np.fromiter(map(id, objs), dtype=np.int64, count=n)
+        if n == len(self.ids) and np.array_equal(ids, self.ids) and self.shown.all() \
+                and all(a is b for a, b in zip(objs, self.objs)):
+            for s in range(0, n, CHUNK):        # the same objects: updated in place
+                part = slice(s, s + CHUNK)
+                values = placement.xyz_array(objs[part], "_pos", "_axis", "_up", "_size")
+                self.keys[part] = self._boxes(kind, values, np.arange(s, min(s + CHUNK, n)),
+                                              self.boxes[part])
+            return self
+        row = self._rows(ids, objs)
+        keys, boxes = np.empty(n, np.uint64), np.zeros((n, 2, 3))
+        for s in range(0, n, CHUNK):
+            part = slice(s, s + CHUNK)
+            values = placement.xyz_array(objs[part], "_pos", "_axis", "_up", "_size")
+            keys[part] = self._boxes(kind, values, row[part], boxes[part])
+        rest = np.ones(len(self.ids), dtype=bool)
+        rest[row[row >= 0]] = False               # rows of objects not shown this pass
+        shown = np.ones(n, bool)
+        if rest.any():
+            objs = objs + [o for o, r in zip(self.objs, rest.tolist()) if r]
+            ids, keys = np.concatenate([ids, self.ids[rest]]), np.concatenate([keys, self.keys[rest]])
+            boxes = np.concatenate([boxes, self.boxes[rest]])
+            shown = np.concatenate([shown, np.zeros(int(rest.sum()), bool)])
+        return _Block(objs, ids, keys, boxes, shown)
+
+    def _boxes(self, kind: str, values: np.ndarray, row: np.ndarray,
+               out: np.ndarray) -> np.ndarray:
+        """Boxes (into ``out``) of objects whose pos, axis, up and size are ``values``
+        (M, 12), at ``row`` of this block (-1: new): the kept box where they are the same,
+        else the new one, widened. Returns their keys."""
+        keys = digest(values)
+        old = row >= 0
+        same = old.copy()
+        if old.any():
+            at = row[old]
+            same[old] = keys[old] == self.keys[at]
+            out[old] = self.boxes[at]
+        todo = ~same
+        if todo.any():
+            k = values[todo]
+            box = oriented_boxes(k[:, 0:3], k[:, 3:6], k[:, 6:9], k[:, 9:12], kind in CENTERED)
+            grow = old[todo]
+            box[grow, 0] = np.minimum(box[grow, 0], out[todo][grow, 0])
+            box[grow, 1] = np.maximum(box[grow, 1], out[todo][grow, 1])
+            out[todo] = box
+        return keys
+
+    def _rows(self, ids, objs) -> np.ndarray:
+        """Each object's row in this block (-1: none; an id reused by a new object
+        after the old one was freed is not its row)."""
+        if not len(self.ids) or not len(ids):
+            return np.full(len(ids), -1)
+        order = np.argsort(self.ids, kind="stable")
+        at = np.minimum(np.searchsorted(self.ids[order], ids), len(order) - 1)
+        row = np.where(self.ids[order[at]] == ids, order[at], -1)
+        mine = self.objs
+        return np.array([r if r < 0 or mine[r] is o else -1 for r, o in zip(row.tolist(), objs)],
+                        dtype=np.int64).reshape(-1)
+
+    def z_shown(self, center, c: float) -> np.ndarray:
+        """(zx, zy) of the objects shown at the last pass (compute_autoscale)."""
+        b = self.boxes[self.shown]
+        d = np.maximum(np.abs(b[:, 0] - center), np.abs(b[:, 1] - center))
+        return np.column_stack([d[:, 0] * c + d[:, 2], d[:, 1] * c + d[:, 2]])
+
+    def keep(self, alive: set) -> "_Block":
+        """Only the rows of objects still on the canvas."""
+        k = np.fromiter((i in alive for i in self.ids.tolist()), dtype=bool,
+                        count=len(self.ids))
+        return _Block([o for o, a in zip(self.objs, k) if a], self.ids[k], self.keys[k],
+                      self.boxes[k], self.shown[k])
 
 
 def vpython_range(zx: float, zy: float, c: float, width: int, height: int) -> float:

@@ -32,7 +32,9 @@ from . import (autoscale, frames, label_draw, materials, placement, point_draw, 
                textured, textures)
 from . import helix_batch
 from .batches import Batch, TextureCache, TexturedBatch
+from .impostors import SphereBatch
 from .instanced import InstancedBatch
+from . import impostors
 
 # kinds drawn from one template scaled by size (a cylinder's, cone's and pyramid's
 # template starts at its pos, a sphere's and box's is centred on it)
@@ -43,6 +45,7 @@ SPHERE_STEPS = (shapes.SPHERE_SLICES, 24, 20, 16, 14, 12, 10, 8, 6)   # slices, 
 SPHERE_LOD_PX = 0.1   # px: the largest sagitta of a sphere's outline
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
+IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
 
 
 def _rgb(colors: np.ndarray) -> np.ndarray:
@@ -246,8 +249,9 @@ class Renderer:
             batch = self._batches.get(key)
             if batch is None:
                 batch = self._batches[key] = self._new_batch(key)
-            members = tuple(map(id, objs))
-            if batch.signature is not None and getattr(batch, "members", None) == members \
+            members = np.fromiter(map(id, objs), dtype=np.int64, count=len(objs))  # 8 B each
+            if batch.signature is not None \
+                    and np.array_equal(getattr(batch, "members", None), members) \
                     and not any(o._dirty for o in objs):
                 batch.show()
                 continue
@@ -294,7 +298,10 @@ class Renderer:
     def _new_batch(self, key: tuple) -> _Batch:
         spec = key[-1] if key[0] in ("textured", "triangle") else None
         if spec is None:
-            return (InstancedBatch if self._instanced(key) else _Batch)(self.plotter, key)
+            if not self._instanced(key):
+                return _Batch(self.plotter, key)
+            spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.plotter.ren_win)
+            return (SphereBatch if spheres else InstancedBatch)(self.plotter, key)
         texture = self._textures.get(spec.source, textures.load(spec))
         return TexturedBatch(self.plotter, key, texture)
 
@@ -346,11 +353,15 @@ class Renderer:
             self._draw_meshes(batch, key, meshes, style)
 
     def _draw_templates(self, batch, key, objs, style) -> None:
+        if isinstance(batch, SphereBatch):
+            self._draw_spheres(batch, key, objs, style)
+            return
         pos, R, size, color = _frames(objs)
-        slices = self._sphere_slices(pos, size) if key[0] == "sphere" else None
-        template_ = template(key[0], slices)
+        slices = None
         if key[0] == "sphere":      # kept to redraw at another detail for another view
-            batch.objs, batch.lod, batch.lod_view = objs, (slices, pos, size), self._view_key()
+            slices, small = self._sphere_detail(pos, size)
+            batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+        template_ = template(key[0], slices)
         if isinstance(batch, InstancedBatch):
             batch.set_instances(template_, (key[0], slices), pos, R, size, _rgb(color), style)
         else:
@@ -364,6 +375,18 @@ class Renderer:
         if key[0] == "sphere":
             helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
 
+    def _draw_spheres(self, batch, key, objs, style) -> None:
+        """Spheres, the small ones impostors: only the meshed ones' turns are found."""
+        pos, size, color = np.split(placement.xyz_array(objs, "_pos", "_size", "_color"), 3,
+                                    axis=1)
+        slices, small = self._sphere_detail(pos, size, True)
+        batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+        meshed = [o for o, s in zip(objs, small.tolist()) if not s]
+        axis, up = np.split(placement.xyz_array(meshed, "_axis", "_up"), 2, axis=1)
+        batch.set_spheres(template(key[0], slices), (key[0], slices), pos,
+                          placement.frames(axis, up), size, _rgb(color), style, small)
+        helix_batch.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
+
     def _draw_polygons(self, batch, key, objs, style) -> None:
         """Triangles and quads: each vertex's own position, normal, colour and opacity."""
         points, normals, triangles, rgba, uv = polygons.arrays(objs)
@@ -375,17 +398,25 @@ class Renderer:
             cells = None if signature == batch.signature else placement.vtk_cells(triangles)
             batch.set(points, normals, rgba, cells, signature, style)
 
-    def _sphere_slices(self, pos: np.ndarray, size: np.ndarray) -> int:
-        """Level of detail for a batch of spheres: enough for the largest on screen."""
+    def _sphere_detail(self, pos: np.ndarray, size: np.ndarray,
+                       impostors_too: bool = False) -> tuple[int, np.ndarray]:
+        """Level of detail for a batch of spheres: which are drawn as impostors (small
+        and round, with ``impostors_too``), and the slices for the others' mesh, enough
+        for the largest of them on screen."""
         v = self.view
         if v is None:
-            return shapes.SPHERE_SLICES
+            return shapes.SPHERE_SLICES, np.zeros(len(pos), dtype=bool)
         fwd = v.focal_point - v.position
         fwd = fwd / np.linalg.norm(fwd)
         depth = np.maximum((pos - v.position) @ fwd, v.near)
         px_per_unit = (v.height / 2) / math.tan(v.fov / 2)
-        radius_px = float(np.max(size.max(axis=1) / 2 / depth)) * px_per_unit
-        return sphere_slices(radius_px)
+        radius_px = size.max(axis=1) / 2 / depth * px_per_unit
+        small = np.zeros(len(pos), dtype=bool)
+        if impostors_too:
+            small = impostors.small(radius_px, SPHERE_STEPS, SPHERE_LOD_PX) \
+                & impostors.round_spheres(size)
+        meshed = radius_px[~small]
+        return sphere_slices(float(meshed.max()) if len(meshed) else 0.0), small
 
     def _draw_meshes(self, batch, key, meshes, style) -> None:
         if not meshes:
@@ -436,11 +467,14 @@ class Renderer:
             if lod is None or batch.lod_view == now or batch.empty:
                 continue
             batch.lod_view = now
-            if key[0] == "sphere":
-                redraw = self._sphere_slices(*lod[1:]) != lod[0]
+            if key[0] == "sphere":      # the objects unchanged: read again, not kept
+                pos, size = np.split(placement.xyz_array(batch.objs, "_pos", "_size"), 2,
+                                     axis=1)
+                slices, small = self._sphere_detail(pos, size, isinstance(batch, SphereBatch))
+                redraw = slices != lod[0] or not np.array_equal(small, lod[1])
                 if not redraw:      # a camera now inside an opaque sphere sees its inside
-                    helix_batch.cull_back_faces(batch, self._style(key), self.view, lod[1],
-                                                lod[2].max(axis=1) / 2)
+                    helix_batch.cull_back_faces(batch, self._style(key), self.view, pos,
+                                                size.max(axis=1) / 2)
             else:
                 redraw = helix_batch.detail_changed(batch, self.view, self.antialias)
             if redraw:

@@ -22,7 +22,10 @@ from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
 
 
 @pytest.fixture(autouse=True)
-def fresh():
+def fresh(monkeypatch):
+    """A fresh scene, its spheres all meshes: small ones are impostors otherwise
+    (test_vpython_impostors.py)."""
+    monkeypatch.setattr(draw, "IMPOSTORS", False)
     vp.reset()
     yield
     vp.reset()

@@ -278,32 +278,33 @@ def test_canvas_defaults_and_camera(vp):
 
 # ---- the renderer ------------------------------------------------------------------------
 
-def test_a_thousand_spheres_are_one_batch_of_instances_updated_in_place(vp):
-    """A thousand spheres: one actor holding one position, turn, size and colour each
-    (instances of one sphere template, :mod:`springscene.vpython.instanced`), rewritten
-    in place when they move, at a level of detail for their size on screen."""
+def test_a_thousand_spheres_are_one_batch_updated_in_place(vp):
+    """A thousand small spheres: one actor holding a centre, radius and colour each
+    (impostors, :mod:`springscene.vpython.impostors`: they are a few pixels across),
+    rewritten in place when they move."""
     from springscene.vpython.draw import Renderer
+    from springscene.vpython.impostors import EQUAL_AREA
 
-    balls = [vp.sphere(pos=vp.vector(i % 10, i // 10 % 10, i // 100), radius=0.3,
+    balls = [vp.sphere(pos=vp.vector(i % 10, i // 10 % 10, i // 100), radius=0.15,
                        color=vp.color.red) for i in range(1000)]
     r = Renderer(vp.scene)
     try:
         first = r.frame()
         actors = list(r.plotter.renderer.actors.values())
         spheres = [b for key, b in r._batches.items() if key[0] == "sphere"]
-        assert len(spheres) == 1 and spheres[0].mesh.n_points == 1000
-        mesh = spheres[0].mesh
-        assert np.allclose(mesh.points[1], [1, 0, 0]) and np.all(mesh["scale"] == 0.6)
+        assert len(spheres) == 1 and spheres[0].no_meshes
+        mesh = spheres[0].impostors.mesh
+        assert mesh.n_points == 1000
+        assert np.allclose(mesh.points[1], [1, 0, 0])
+        assert np.allclose(mesh["radius"], 0.15 * EQUAL_AREA)
         mtime = mesh.GetPoints().GetMTime()
         r.frame()                                       # nothing moved: nothing rewritten
         assert mesh.GetPoints().GetMTime() == mtime
         for b in balls:
             b.pos = b.pos + vp.vector(0, 0, 0.5)
         r.frame()
-        assert spheres[0].mesh is mesh and mesh.GetPoints().GetMTime() > mtime
+        assert spheres[0].impostors.mesh is mesh and mesh.GetPoints().GetMTime() > mtime
         assert np.allclose(mesh.points[1], [1, 0, 0.5])
-        # a few pixels across: fewer slices than VPython's 30 (level of detail)
-        assert spheres[0].template_key[1] < 30
         assert list(r.plotter.renderer.actors.values()) == actors     # no actor added
         assert first.shape == (400, 640, 3)
     finally:
