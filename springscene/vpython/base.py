@@ -29,7 +29,6 @@ class _Base:
         self._canvas = cv if cv is not None else _current_canvas()
         self._dirty = True
         self._canvas._add(self)
-        self._frame = None
         if args.get("frame") is not None:
             self.frame = args.pop("frame")
         args.pop("frame", None)

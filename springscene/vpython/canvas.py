@@ -53,16 +53,17 @@ def _side(cv: "canvas", name: str, value):
 class _Colors:
     """``color.red`` ... and ``color.gray(g)``, VPython's values."""
 
-    red = property(lambda self: vector(1, 0, 0))
-    green = property(lambda self: vector(0, 1, 0))
-    blue = property(lambda self: vector(0, 0, 1))
-    yellow = property(lambda self: vector(1, 1, 0))
-    cyan = property(lambda self: vector(0, 1, 1))
-    magenta = property(lambda self: vector(1, 0, 1))
-    orange = property(lambda self: vector(1, 0.6, 0))
+    # float literals: the components are shared constants, not three new floats a call
+    red = property(lambda self: vector(1.0, 0.0, 0.0))
+    green = property(lambda self: vector(0.0, 1.0, 0.0))
+    blue = property(lambda self: vector(0.0, 0.0, 1.0))
+    yellow = property(lambda self: vector(1.0, 1.0, 0.0))
+    cyan = property(lambda self: vector(0.0, 1.0, 1.0))
+    magenta = property(lambda self: vector(1.0, 0.0, 1.0))
+    orange = property(lambda self: vector(1.0, 0.6, 0.0))
     purple = property(lambda self: vector(0.4, 0.2, 0.6))
-    white = property(lambda self: vector(1, 1, 1))
-    black = property(lambda self: vector(0, 0, 0))
+    white = property(lambda self: vector(1.0, 1.0, 1.0))
+    black = property(lambda self: vector(0.0, 0.0, 0.0))
 
     @staticmethod
     def gray(g: float) -> vector:

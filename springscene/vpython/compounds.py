@@ -97,9 +97,7 @@ class fused(standard):
 
     _tinted = True     # False: the vertex colours as made, until the program sets color
 
-    def _hook(self) -> None:
-        super()._hook()
-        self._color._on_change = self._retint
+    _HOOKS = {**standard._HOOKS, "_color": "_retint"}
 
     def _retint(self) -> None:
         self._tinted = True
@@ -107,12 +105,11 @@ class fused(standard):
 
     @property
     def color(self) -> vector:
-        return self._color
+        return standard.color.fget(self)
 
     @color.setter
     def color(self, value) -> None:
         standard.color.fset(self, value)
-        self._color._on_change = self._retint
         self._tinted = True
 
     def _tint(self) -> np.ndarray:
@@ -132,7 +129,7 @@ class fused(standard):
             new.__dict__[name] = vector(self.__dict__[name])
         new._trail = None
         new.__dict__.pop("_stopped_trails", None)     # the original's stopped trails
-        new._hook()
+        new.__dict__.pop("_frame", None)              # the copy is in the world
         new._register({"canvas": self._canvas})
         for name, value in args.items():
             setattr(new, name, value)

@@ -21,6 +21,7 @@ from . import runtime
 from .base import _Base
 from .checks import _vec
 from .curves import curve, points
+from .shared_defaults import Default, default, seed_keys, stored
 from .vector import is_lenient, vector
 
 
@@ -64,35 +65,72 @@ class _PosShortcut:
             obj.__dict__[self.component] = value
 
 
+_BUILDING: set[int] = set()     # ids of the objects whose ``__init__`` is running
+_ORIGIN, _X, _Y, _WHITE = default(0, 0, 0), default(1, 0, 0), default(0, 1, 0), default(1, 1, 1)
+
+
+def _class_setup(cls) -> None:
+    """The default vectors ``cls``'s objects start with, and its seeded key table."""
+    cls._defaults = stored(cls, {"_pos": _ORIGIN, "_axis": _X, "_up": _Y,
+                                 "_size": default(*cls._default_size), "_color": _WHITE})
+    seed_keys(cls, cls._KEYS)
+
+
 class standard(_Base):
-    """VPython's ``standardAttributes``: pos, axis, up, size, color, opacity, trails."""
+    """VPython's ``standardAttributes``: pos, axis, up, size, color, opacity, trails.
+
+    Memory (:mod:`.shared_defaults`): the scalars at VPython's default are the class's;
+    the vectors at their default are read-only vectors shared by the class, copied by an
+    object when it changes one in place (:meth:`_own`). A program reading ``ball.axis``
+    gets the object's own vector, hooked (``_on_change``) then (:meth:`_live`)."""
 
     _default_size = (1.0, 1.0, 1.0)
     _axis_sets_size = True          # sphere and ring keep their size when axis changes
 
+    # the defaults (vpython.py ``standardAttributes``), stored on an object once set
+    _trail_color = None
+    _opacity = 1.0
+    _shininess = 0.6
+    _emissive = False
+    _visible = True
+    _make_trail = False
+    _trail_type = "curve"
+    _trail_radius = None
+    _interval = 0
+    _retain = -1
+    _pps = 0
+    _trail = None
+    _pos_sets = 0
+    _oldaxis = None
+    _adjustupaxis = True
+    _pickable = True
+    # what an in-place change of each vector calls (a compound's colour: ``_retint``)
+    _HOOKS = {"_pos": "_on_pos_change", "_axis": "_on_axis_change",
+              "_size": "_on_size_change", "_up": "_touch", "_color": "_touch"}
+    # what every object stores, first in its class's key table (:func:`.seed_keys`)
+    _KEYS = ("_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty")
+
+    def __init_subclass__(cls, **kwargs) -> None:
+        super().__init_subclass__(**kwargs)
+        _class_setup(cls)
+
+    @property
+    def _constructing(self) -> bool:
+        """True while the object's ``__init__`` runs (kept outside the object)."""
+        return id(self) in _BUILDING
+
     def __init__(self, **args) -> None:
-        object.__setattr__(self, "_constructing", True)
-        self._pos = vector(0, 0, 0)
-        self._axis = vector(1, 0, 0)
-        self._up = vector(0, 1, 0)
-        self._size = vector(*self._default_size)
-        self._color = vector(1, 1, 1)
-        self._trail_color = None
-        self._opacity = 1.0
-        self._shininess = 0.6
-        self._emissive = False
-        self._visible = True
-        self._make_trail = False
-        self._trail_type = "curve"
-        self._trail_radius = None
-        self._interval = 0
-        self._retain = -1
-        self._pps = 0
-        self._trail = None
-        self._pos_sets = 0
-        self._oldaxis = None
-        self._adjustupaxis = True
-        self._pickable = True
+        _BUILDING.add(id(self))
+        try:
+            self._setup(args)
+        finally:
+            _BUILDING.discard(id(self))
+        if self._make_trail:
+            self._add_trail_point()
+
+    def _setup(self, args: dict) -> None:
+        for name, v in self._defaults:
+            object.__setattr__(self, name, v)
         # VPython's order: plain vectors, then axis, size, up, then scalars, then linked scalars
         for name in ("pos", "color"):
             if name in args:
@@ -112,32 +150,42 @@ class standard(_Base):
         for name in ("red", "green", "blue", "radius", "length", "height", "width"):
             if name in args and hasattr(type(self), name):
                 setattr(self, name, args.pop(name))
-        self._hook()
         self._register(args)
         for name, value in args.items():        # the program's own attributes
             setattr(self, name, value)
-        self._constructing = False
-        if self._make_trail:
-            self._add_trail_point()
 
-    def _hook(self) -> None:
-        """Let in-place changes (``ball.pos.x = 1``) reach the object."""
-        self._pos._on_change = self._on_pos_change
-        self._axis._on_change = self._on_axis_change
-        self._size._on_change = self._on_size_change
-        self._up._on_change = self._touch
-        self._color._on_change = self._touch
+    def _own(self, name: str) -> vector:
+        """The object's own vector ``name``, copied from the class's default first, to be
+        changed in place."""
+        v = getattr(self, name)
+        if type(v) is Default:
+            v = vector(v)
+            setattr(self, name, v)
+        return v
+
+    def _live(self, name: str) -> vector:
+        """The vector ``name`` as a program gets it: the object's own, whose in-place
+        changes (``ball.pos.x = 1``) reach the object."""
+        v = self._own(name)
+        if v._on_change is None:
+            v._on_change = getattr(self, self._HOOKS[name])
+        return v
 
     # -- position, trail ------------------------------------------------------------------
 
     @property
     def pos(self) -> vector:
-        return self._pos
+        v = self._pos
+        if v._on_change is None:         # hooked on a program's first read (``_live``)
+            if type(v) is Default:
+                v = self._own("_pos")
+            v._on_change = self._on_pos_change
+        return v
 
     @pos.setter
     def pos(self, value) -> None:
-        self._pos = _vec(value, "pos")
-        self._pos._on_change = self._on_pos_change
+        v = self._pos = _vec(value, "pos")
+        v._on_change = self._on_pos_change   # hooked now: a moving object's pos is read again
         self._on_pos_change()
 
     def _on_pos_change(self) -> None:
@@ -215,7 +263,7 @@ class standard(_Base):
 
     @property
     def trail_color(self) -> vector:
-        return self._trail_color if self._trail_color is not None else self._color
+        return self._trail_color if self._trail_color is not None else self.color
 
     @trail_color.setter
     def trail_color(self, value) -> None:
@@ -243,25 +291,25 @@ class standard(_Base):
 
     @property
     def axis(self) -> vector:
-        return self._axis
+        v = self._axis
+        return v if v._on_change is not None else self._live("_axis")
 
     @axis.setter
     def axis(self, value) -> None:
         value = _vec(value, "axis")
         old = self._axis
         self._axis = value
-        value._on_change = self._on_axis_change
         if self._axis_sets_size:
             m = value.mag
             if abs(self._size.x - m) > 0.0001 * self._size.x:
-                self._size._x_set(m)
+                self._own("_size")._x_set(m)
         if self._adjustupaxis:
             self._adjust_up(old, value)
         self._dirty = True
 
     def _on_axis_change(self) -> None:
         if self._axis_sets_size:
-            self._size._x_set(self._axis.mag)
+            self._own("_size")._x_set(self._axis.mag)
         self._dirty = True
 
     def _adjust_up(self, old: vector, new: vector) -> None:
@@ -274,18 +322,17 @@ class standard(_Base):
             old, self._oldaxis = self._oldaxis, None
         up = _turned(self._up, old, new)
         if up is not None:
-            up._on_change = self._touch
             self._up = up
 
     @property
     def up(self) -> vector:
-        return self._up
+        v = self._up
+        return v if v._on_change is not None else self._live("_up")
 
     @up.setter
     def up(self, value) -> None:
         value = _vec(value, "up")
         old = self._up
-        value._on_change = self._touch
         self._up = value
         if self._adjustupaxis:
             self._adjust_axis(old, value)
@@ -297,18 +344,16 @@ class standard(_Base):
             return
         axis = _turned(self._axis, old, new)
         if axis is not None:
-            axis._on_change = self._on_axis_change
             self._axis = axis
 
     @property
     def size(self) -> vector:
-        return self._size
+        v = self._size
+        return v if v._on_change is not None else self._live("_size")
 
     @size.setter
     def size(self, value) -> None:
-        value = _vec(value, "size")
-        self._size = value
-        value._on_change = self._on_size_change
+        self._size = _vec(value, "size")
         if self._axis_sets_size:
             self._fit_axis()
         self._dirty = True
@@ -323,7 +368,6 @@ class standard(_Base):
         m = self._axis.mag
         a = self._axis.norm() * self._size.x if m else vector(self._size.x, 0, 0)
         if not a.equals(self._axis):
-            a._on_change = self._on_axis_change
             self._axis = a
 
     @property
@@ -332,7 +376,7 @@ class standard(_Base):
 
     @length.setter
     def length(self, value) -> None:
-        self._size._x_set(float(value))
+        self._own("_size")._x_set(float(value))
         self._fit_axis()
         self._dirty = True
 
@@ -342,7 +386,7 @@ class standard(_Base):
 
     @height.setter
     def height(self, value) -> None:
-        self._size._y_set(float(value))
+        self._own("_size")._y_set(float(value))
         self._dirty = True
 
     @property
@@ -351,19 +395,19 @@ class standard(_Base):
 
     @width.setter
     def width(self, value) -> None:
-        self._size._z_set(float(value))
+        self._own("_size")._z_set(float(value))
         self._dirty = True
 
     # -- appearance ----------------------------------------------------------------------
 
     @property
     def color(self) -> vector:
-        return self._color
+        v = self._color
+        return v if v._on_change is not None else self._live("_color")
 
     @color.setter
     def color(self, value) -> None:
         self._color = _vec(value, "color")
-        self._color._on_change = self._touch
         self._dirty = True
 
     red = property(lambda self: self._color.x,
@@ -435,3 +479,6 @@ class standard(_Base):
         new = self._clone_args()
         new.update(args)
         return type(self)(**new)
+
+
+_class_setup(standard)

@@ -69,11 +69,8 @@ class arrow(standard):
 
     _kind = "arrow"
     _default_size = (1.0, 0.2, 0.2)
-
-    def __init__(self, **args) -> None:
-        self._shaftwidth = self._headwidth = self._headlength = 0.0
-        self._round = False
-        super().__init__(**args)
+    _shaftwidth = _headwidth = _headlength = 0.0
+    _round = False
 
     shaftwidth = standard._scalar("shaftwidth")
     headwidth = standard._scalar("headwidth")
@@ -91,12 +88,9 @@ class helix(_Round):
 
     _kind = "helix"
     _default_size = (1.0, 2.0, 2.0)
-
-    def __init__(self, **args) -> None:
-        self._coils = 5.0
-        self._thickness = None
-        self._ccw = True
-        super().__init__(**args)
+    _coils = 5.0
+    _thickness = None
+    _ccw = True
 
     coils = standard._scalar("coils")
     ccw = standard._scalar("ccw", bool)
@@ -132,7 +126,6 @@ class ring(standard):
         r = self.radius
         t = float(value)
         self._size = vector(2 * t, 2 * (r + t), 2 * (r + t))
-        self._size._on_change = self._touch
         self._dirty = True
 
     @property
@@ -144,5 +137,4 @@ class ring(standard):
         t = self.thickness
         r = float(value)
         self._size = vector(2 * t, 2 * (r + t), 2 * (r + t))
-        self._size._on_change = self._touch
         self._dirty = True

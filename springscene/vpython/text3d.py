@@ -177,6 +177,7 @@ class text(fused):
             raise AttributeError("A text object must have a text attribute")
         spec = self._spec(args)
         object.__setattr__(self, "_billboard", spec["billboard"])
+        self._axis, self._up = vector(1, 0, 0), vector(0, 1, 0)   # stored: _axis_v, _up_v
         surface, longest = letters(spec["text"], spec["font"], spec["height"], spec["depth"],
                                    spec["align"], spec["colours"], spec["faces"])
         lo, hi = surface.points.min(axis=0), surface.points.max(axis=0)

@@ -40,7 +40,7 @@ def has_layout(obj) -> bool:
 
 def spec_for(obj) -> TextureSpec | None:
     """The texture ``obj`` is drawn with, or None (none given, none drawable, a kind without)."""
-    value = obj.__dict__.get("texture")
+    value = getattr(obj, "texture", None)     # not obj.__dict__: that would make one
     if value is None or not has_layout(obj):
         return None
     return textures.spec_of(value)

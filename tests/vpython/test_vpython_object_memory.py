@@ -1,0 +1,242 @@
+"""Memory of VPython objects (issue 16): an object stores only what differs from its class.
+
+``standard`` keeps VPython's scalar defaults at class level, and an object's vectors at
+their default point to one read-only vector its class shares
+(:mod:`springscene.vpython.shared_defaults`); a program reading a vector (``ball.axis``)
+gets the object's own copy then, so ``ball.axis.x = 2`` changes that object alone. The
+bytes are measured with tracemalloc in a fresh interpreter (a class's objects share one
+key table, which other tests' objects would have grown)."""
+
+from __future__ import annotations
+
+import gc
+import json
+import subprocess
+import sys
+import textwrap
+from pathlib import Path
+
+import pytest
+
+import springscene.vpython as vpython_module
+from springscene.vpython import frames
+from springscene.vpython.draw import Renderer
+from springscene.vpython.objects import standard
+from springscene.vpython.shared_defaults import Default
+from springscene.vpython.vector import vector
+
+ROOT = Path(__file__).resolve().parents[2]
+
+# bytes of Python objects per object, over 20,000 (the program's own vectors included:
+# ``pos=vector(i, 0, 0)`` is a vector and three floats); before issue 16: 1,265 / 1,322 /
+# 1,306; measured after: 441 / 498 / 666, and 153 for ``sphere()``
+BOUNDS = {"sphere": 450, "box": 510, "helix": 690, "bare sphere": 165}
+
+MEASURE = textwrap.dedent("""\
+    import gc, json, sys, tracemalloc
+    from springscene.vpython import box, color, helix, sphere, vector
+    MAKE = {
+        "sphere": lambda i: sphere(pos=vector(i, 0, 0), radius=0.3, color=color.red),
+        "box": lambda i: box(pos=vector(i, 0, 0), size=vector(1, 2, 3), color=color.red),
+        "helix": lambda i: helix(pos=vector(i, 0, 0), axis=vector(0, 1, 0), radius=0.3),
+        "bare sphere": lambda i: sphere(),
+    }
+    N = 20000
+    out = {}
+    for name in sys.argv[1:]:
+        gc.collect()
+        tracemalloc.start()
+        before = tracemalloc.get_traced_memory()[0]
+        kept = [MAKE[name](i) for i in range(N)]
+        gc.collect()
+        out[name] = (tracemalloc.get_traced_memory()[0] - before) / N
+        tracemalloc.stop()
+    print(json.dumps(out))
+""")
+
+
+def measure(*kinds: str) -> dict:
+    """Bytes per object of each kind, 20,000 of each made in this order, in a fresh
+    interpreter."""
+    proc = subprocess.run([sys.executable, "-c", MEASURE, *kinds], cwd=ROOT,
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    return json.loads(proc.stdout)
+
+
+@pytest.mark.parametrize("kind", list(BOUNDS))
+def test_bytes_per_object_over_twenty_thousand(kind):
+    assert 0 < measure(kind)[kind] <= BOUNDS[kind]
+
+
+@pytest.fixture
+def vp():
+    vpython_module.reset()
+    return vpython_module
+
+
+def xyz(v) -> tuple:
+    return (v.x, v.y, v.z)
+
+
+def test_defaults_read_as_vpythons(vp):
+    s = vp.sphere()
+    assert xyz(s.pos) == (0, 0, 0) and xyz(s.axis) == (1, 0, 0) and xyz(s.up) == (0, 1, 0)
+    assert xyz(s.size) == (2, 2, 2) and s.radius == 1 and xyz(s.color) == (1, 1, 1)
+    assert (s.opacity, s.shininess, s.emissive, s.visible) == (1.0, 0.6, False, True)
+    assert (s.make_trail, s.trail_type, s.interval, s.retain, s.pickable) == \
+        (False, "curve", 0, -1, True)
+    assert s.trail_radius == pytest.approx(0.2) and xyz(s.trail_color) == (1, 1, 1)
+    assert xyz(vp.box().size) == (1, 1, 1) and xyz(vp.cylinder().size) == (1, 2, 2)
+    assert xyz(vp.ring().size) == (0.2, 2.2, 2.2) and xyz(vp.ellipsoid().size) == (1, 1, 1)
+    a = vp.arrow()
+    assert xyz(a.size) == (1, 0.2, 0.2) and (a.shaftwidth, a.headwidth, a.round) == (0, 0, False)
+    h = vp.helix()
+    assert (h.coils, h.thickness, h.ccw) == (5, pytest.approx(0.1), True)
+
+
+def test_an_object_stores_only_what_is_set(vp):
+    s, t = (vp.sphere(pos=vp.vector(1, 2, 3), radius=0.3, color=vp.color.red) for _ in "st")
+    assert set(vars(s)) == {"_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty"}
+    assert s._axis is t._axis and s._up is t._up and type(s._axis) is Default
+    assert s._pos is not t._pos and type(s._pos) is vector and s._pos._on_change is None
+    b = vp.box()
+    assert b._size is vp.box()._size and b._size is not s._size
+    b.opacity = 0.5
+    assert set(vars(b)) - set(vars(s)) == {"_opacity"}
+
+
+@pytest.mark.parametrize("attr, component", [("axis", "x"), ("up", "z"), ("size", "y"),
+                                             ("color", "x"), ("pos", "y")])
+def test_a_write_to_a_default_vector_changes_that_object_alone(vp, attr, component):
+    a, b = vp.box(), vp.box()
+    before = xyz(getattr(b, attr))
+    setattr(getattr(a, attr), component, 3)
+    assert getattr(getattr(a, attr), component) == 3
+    assert xyz(getattr(b, attr)) == before == xyz(getattr(vp.box(), attr))
+    assert xyz(getattr(vp.box(), "_" + attr)) == before
+
+
+def test_vectors_read_are_live_and_their_changes_reach_the_object(vp):
+    b = vp.box()
+    p, size = b.pos, b.size
+    assert b.pos is p and b.size is size
+    b._dirty = False
+    p.x = 5
+    assert b.pos.x == 5 and b._dirty
+    b.axis = vp.vector(3, 0, 0)             # a box's axis is its length: size.x follows
+    assert size.x == 3 and b.size is size
+    b.axis.x = 4
+    assert b.size.x == 4 and b.length == 4
+    b.size.x = 2                             # ... and the axis follows size
+    assert xyz(b.axis) == (2, 0, 0)
+    c = vp.box()
+    c._dirty = False
+    c.color.y = 0.5
+    assert c._dirty and xyz(c.color) == (1, 0.5, 1)
+
+
+def test_length_height_width_of_a_default_size_change_that_object_alone(vp):
+    a, b = vp.box(), vp.box()
+    a.length, a.height, a.width = 2, 3, 4
+    assert xyz(a.size) == (2, 3, 4) and xyz(a.axis) == (2, 0, 0)
+    assert xyz(b.size) == (1, 1, 1) and xyz(b.axis) == (1, 0, 0)
+
+
+def test_turning_the_axis_turns_up_for_that_object_alone(vp):
+    a, b = vp.cylinder(), vp.cylinder()
+    a.axis = vp.vector(0, 1, 0)
+    assert xyz(a.up) == pytest.approx((-1, 0, 0)) and xyz(b.up) == (0, 1, 0)
+    a.rotate(angle=1.0, axis=vp.vector(0, 0, 1))
+    assert xyz(b.axis) == (1, 0, 0) and xyz(vp.cylinder().axis) == (1, 0, 0)
+
+
+def test_scalar_attributes_per_object(vp):
+    a, b = vp.sphere(), vp.sphere()
+    a.visible = False
+    a.opacity, a.shininess, a.emissive = 0.5, 0.1, True
+    assert (a.visible, a.opacity, a.shininess, a.emissive) == (False, 0.5, 0.1, True)
+    assert (b.visible, b.opacity, b.shininess, b.emissive) == (True, 1.0, 0.6, False)
+    assert (standard._visible, standard._opacity) == (True, 1.0)
+    a.delete()
+    assert a not in a.canvas.objects and b in b.canvas.objects
+    a.ball_mass = 2                          # the program's own attribute
+    assert a.ball_mass == 2 and not hasattr(b, "ball_mass")
+
+
+def test_clone_copies_and_then_is_its_own(vp):
+    a = vp.box(color=vp.color.green, opacity=0.4)
+    a.axis.x = 2
+    c = a.clone(pos=vp.vector(1, 0, 0))
+    assert xyz(c.axis) == (2, 0, 0) and xyz(c.size) == (2, 1, 1) and c.opacity == 0.4
+    c.axis.x = 5
+    c.color.x = 1
+    assert xyz(a.axis) == (2, 0, 0) and xyz(a.color) == (0, 1, 0)
+
+
+def test_a_trail_follows_a_default_pos_changed_in_place(vp):
+    b = vp.sphere(make_trail=True)
+    b.pos.x = 1
+    b.pos.y = 2
+    trail = b.trail_object
+    assert [xyz(trail.point(n)["pos"]) for n in range(trail.npoints)] == \
+        [(0, 0, 0), (1, 0, 0), (1, 2, 0)]
+
+
+def test_an_object_at_default_pos_in_a_frame_is_drawn_where_the_frame_is(vp):
+    f = frames.frame(pos=vp.vector(5, 0, 0), axis=vp.vector(0, 1, 0), up=vp.vector(-1, 0, 0))
+    s = vp.box(frame=f)
+    with frames.in_world([s]):
+        assert xyz(s._pos) == (5, 0, 0) and xyz(s._axis) == pytest.approx((0, 1, 0))
+        assert xyz(s._up) == pytest.approx((-1, 0, 0))
+    assert type(s._pos) is Default and type(s._axis) is Default     # the shared ones again
+    assert xyz(s.pos) == (0, 0, 0) and xyz(s.axis) == (1, 0, 0)
+
+
+def test_compound_clone_and_colour_of_defaults(vp):
+    c = vp.compound([vp.box(), vp.sphere(pos=vp.vector(2, 0, 0))])
+    c._tinted = False
+    c.color.x = 0.5
+    assert c._tinted and c.color.x == 0.5
+    axis = xyz(c.axis)
+    d = c.clone(pos=vp.vector(0, 3, 0))
+    assert xyz(d.axis) == axis and d.color.x == 0.5 and d._frame is None
+    d.axis.x = 7
+    d.color.x = 1
+    assert xyz(c.axis) == axis and c.color.x == 0.5
+
+
+def test_the_shared_defaults_refuse_a_write(vp):
+    shared = vp.box()._axis
+    with pytest.raises(AttributeError):
+        shared.x = 3
+    with pytest.raises(AttributeError):
+        vp.box()._size._x_set(3)
+    assert xyz(shared) == (1, 0, 0) and xyz(vp.box().axis) == (1, 0, 0)
+
+
+def test_objects_made_bare_first_leave_room_for_the_common_attributes():
+    """The seeded key table: spheres made with nothing, then spheres with pos, radius and
+    colour (a program's usual order) still share the table (no dictionary each)."""
+    # (+10 B: the canvas's list of objects grows once more for the second 20,000)
+    assert measure("bare sphere", "sphere")["sphere"] <= BOUNDS["sphere"] + 10
+
+
+def test_drawing_adds_nothing_to_the_objects(vp):
+    """The renderer reads every object every frame: it must neither store defaults on them
+    nor make each one a dictionary (reading ``obj.__dict__`` would)."""
+    objs = [vp.sphere(pos=vp.vector(i, 0, 0), radius=0.3, color=vp.color.red)
+            for i in range(3)]
+    objs += [vp.box(), vp.cylinder(axis=vp.vector(0, 2, 0)), vp.helix(), vp.arrow(),
+             vp.ring(), vp.cone(opacity=0.5)]
+    r = Renderer(vp.scene)
+    try:
+        r.frame()
+        objs[0].pos = vp.vector(0, 1, 0)
+        image = r.frame()
+    finally:
+        r.close()
+    assert image.std() > 0                                     # something was drawn
+    for o in objs:
+        assert not any(isinstance(x, dict) for x in gc.get_referents(o)), o
+        assert set(o.__dict__) - set(standard._KEYS) <= {"_opacity"}, o
