@@ -89,6 +89,8 @@ class MergedMesh(Baseline):
         super().__init__(cfg, system, antialias, color_range)
         import pyvista as pv
 
+        from springscene.view import window
+
         n, s = len(system.pos), len(self.i)
         sphere = pv.Sphere(radius=1.0, theta_resolution=SPHERE_RES, phi_resolution=SPHERE_RES)
         self.unit = np.asarray(sphere.points, float)
@@ -102,7 +104,10 @@ class MergedMesh(Baseline):
         self.atoms.point_data["rgb"] = np.zeros((n * p, 3), np.uint8)
         self.atoms.GetPointData().SetActiveScalars("rgb")
         self.p = p
-        a = self.pl.add_mesh(self.atoms, rgb=True, smooth_shading=False, show_scalar_bar=False)
+        a = window.mesh_actor(self.atoms)
+        a.GetMapper().ScalarVisibilityOn()
+        a.GetMapper().SetColorModeToDirectScalars()
+        self.pl.add_actor(a)
         scene._material(a, cfg.atom.color)
         # unit tube along x from -1/2 to 1/2, radius 1
         phi = 2 * np.pi * np.arange(CYLINDER_SIDES) / CYLINDER_SIDES
@@ -118,8 +123,8 @@ class MergedMesh(Baseline):
                                  np.hstack([np.full((len(quads), 1), 4), quads]).ravel())
         self.bonds.point_data["Normals"] = np.zeros((s * m, 3), np.float32)
         self.bonds.GetPointData().SetActiveNormals("Normals")
-        b = self.pl.add_mesh(self.bonds, smooth_shading=False, show_scalar_bar=False)
-        b.GetMapper().ScalarVisibilityOff()
+        b = window.mesh_actor(self.bonds)
+        self.pl.add_actor(b)
         scene._material(b, cfg.bond.color)
         self.update(system)
 

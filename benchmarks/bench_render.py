@@ -6,7 +6,7 @@ All at the wiki scene's 900 x 600, the same meshes and the same anti-aliasing
 - floor:  the scene with nothing moving: render + read back + encode;
 - naive:  a line-by-line PyVista translation of the wiki loop, VPython-style
           vector physics, the spring mesh rebuilt (Spline + tube) and its actor
-          re-added every frame, frames taken with ``Plotter.screenshot``;
+          re-added every frame (in the scene's own window), each frame read back;
 - springscene: ``render_video`` (spring points rewritten in place);
 - draft:  ``render_video`` without anti-aliasing.
 
@@ -57,6 +57,10 @@ def naive(cfg, out: Path) -> float:
     """The wiki loop translated line by line to PyVista."""
     import pyvista as pv
 
+    from springscene.view import window
+    from springscene.view.scene import grab as scene_grab
+    from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+
 
     n = _frames(cfg)
     k, L0, m, dt = cfg.spring.k, cfg.spring.L0, cfg.ball.m, cfg.physics.dt
@@ -73,6 +77,7 @@ def naive(cfg, out: Path) -> float:
         tube = HelixTube(cfg.spring.radius, cfg.spring.thickness, cfg.spring.coils)
         frame = HelixFrame()
         spring = None
+        buffer = vtkUnsignedCharArray()
         start = time.perf_counter()
         steps_per_frame = round(1 / (cfg.render.fps * dt))
         for _ in range(n):
@@ -85,14 +90,13 @@ def naive(cfg, out: Path) -> float:
             axis = ball_pos - holder_pos           # spring.axis = ball.pos - holder.pos
             centre = tube.centerline(np.linalg.norm(axis)) @ frame.set_axis(axis).T + holder_pos
             if spring is not None:
-                pl.remove_actor(spring, render=False)
-            spring = pl.add_mesh(pv.Spline(centre, len(centre)).tube(radius=cfg.spring.thickness / 2,
-                                                                    n_sides=16),
-                                 smooth_shading=True, render=False)
+                pl.remove_actor(spring)
+            spring = window.mesh_actor(pv.Spline(centre, len(centre)).tube(
+                radius=cfg.spring.thickness / 2, n_sides=16), smooth_shading=True)
+            pl.add_actor(spring)
             spring.SetProperty(material)
-            ball.position = ball_pos
-            pl.render()
-            w.write(pl.screenshot(return_img=True))
+            ball.SetPosition(*ball_pos)
+            w.write(scene_grab(pl.ren_win, cfg.scene.width, cfg.scene.height, buffer))
         w.close()
         return time.perf_counter() - start
 

@@ -35,6 +35,7 @@ from ..model.lattice import Lattice
 from ..model.physics import System
 from ..settings import AtomCfg, BondCfg, CameraCfg, SceneCfg
 from ..units import si_prefix
+from . import window
 from .geometry import HelixBatch, frames_from_up, perpendicular_ups
 from .scene import SceneBase, _material, add_title, title_color
 
@@ -275,7 +276,6 @@ class LatticeScene(SceneBase):
         if color_by != "none" and color_range is None:
             raise ValueError(f"colouring by {color_by} needs a color_range (color_scale)")
         pl = self._open(canvas, camera, antialias, backend_name)
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
 
         lat = lattice
         self.lattice = lat
@@ -290,7 +290,7 @@ class LatticeScene(SceneBase):
         self.color_by = color_by
         self.color_range: tuple[float, float] | None = None
         self.unit: tuple[str, float] | None = None
-        self.lut = colormap_table()
+        self.lut = colormap_table() if color_by != "none" else None   # matplotlib only then
         self.held_color = held_color(atom.color)
         if self.color_by != "none":
             lo, hi = (float(v) for v in color_range)
@@ -299,18 +299,18 @@ class LatticeScene(SceneBase):
             self.color_range = (lo, hi)
             self.unit = display_unit(self.color_by, hi)
 
-        self._make_atoms(pv, system, atom.color)
-        self._make_bonds(pv, system, bond, d)
+        self._make_atoms(system, atom.color)
+        self._make_bonds(system, bond, d)
         add_title(pl, canvas)
         self.update(system)
         self.color_bar = self._make_color_bar() if self.color_by != "none" else None
 
-    def _make_atoms(self, pv, system: System, color: Color) -> None:
+    def _make_atoms(self, system: System, color: Color) -> None:
         """The atoms: one point cloud, each point a sphere imposter."""
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy: VTK
 
-        self.atoms = pv.PolyData(np.asarray(system.pos, np.float32))
+        self.atoms = window.polydata(np.asarray(system.pos, np.float32))
         rgb = np.empty((len(system.pos), 3), np.uint8)
         rgb[:] = _to_uint8(color)
         rgb[self.held] = _to_uint8(self.held_color)
@@ -329,7 +329,7 @@ class LatticeScene(SceneBase):
         mapper.ScalarVisibilityOn()
         self.atom_actor = self._add_actor(mapper, color, "atoms")
 
-    def _make_bonds(self, pv, system: System, b: BondCfg, d: float) -> None:
+    def _make_bonds(self, system: System, b: BondCfg, d: float) -> None:
         """The bonds: one object, in the style ``[bond] style`` resolves to."""
         self.bond_style = bond_style(b.style, len(self._i))
         if self.bond_style == "helix":
@@ -343,7 +343,7 @@ class LatticeScene(SceneBase):
         else:
             radius, self._bond_extent = 0.0, 0.0
         self._place_camera(system)      # the first view sizes the helices' polygons
-        getattr(self, f"_make_{self.bond_style}")(pv, b, radius, system)
+        getattr(self, f"_make_{self.bond_style}")(b, radius, system)
 
     def _add_actor(self, mapper, color, name: str):
         from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy: VTK
@@ -351,12 +351,12 @@ class LatticeScene(SceneBase):
         actor = vtkActor()
         actor.SetMapper(mapper)
         _material(actor, color)
-        self.plotter.add_actor(actor, name=name, reset_camera=False, pickable=False)
+        self.plotter.add_actor(actor, name=name, pickable=False)
         return actor
 
     # -- the bonds, by style -----------------------------------------------------------
 
-    def _make_helix(self, pv, b, radius: float, system: System) -> None:
+    def _make_helix(self, b, radius: float, system: System) -> None:
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
@@ -369,7 +369,7 @@ class LatticeScene(SceneBase):
         self._ups = perpendicular_ups(axes)
         pts, normals = self.helix.points(system.pos[self._i], axes,
                                          frames_from_up(axes, self._ups))
-        mesh = pv.PolyData(pts.astype(np.float32), self.helix.faces())
+        mesh = window.polydata(pts.astype(np.float32), self.helix.faces())
         mesh.point_data["Normals"] = normals.astype(np.float32)
         mesh.GetPointData().SetActiveNormals("Normals")
         self.bonds = mesh
@@ -380,12 +380,12 @@ class LatticeScene(SceneBase):
         mapper.ScalarVisibilityOff()
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
-    def _make_cylinder(self, pv, b, radius: float, system: System) -> None:
+    def _make_cylinder(self, b, radius: float, system: System) -> None:
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLStickMapper  # noqa: PLC0415  heavy: VTK
 
         n = len(self._i)
-        sticks = pv.PolyData(np.zeros((n, 3), np.float32))
+        sticks = window.polydata(np.zeros((n, 3), np.float32))
         scale = np.full((n, 3), radius, np.float32)
         sticks.point_data["orientation"] = np.zeros((n, 3), np.float32)
         sticks.point_data["scale"] = scale
@@ -404,12 +404,12 @@ class LatticeScene(SceneBase):
         mapper.ScalarVisibilityOn()
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
-    def _make_line(self, pv, b, radius: float, system: System) -> None:
-        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData  # noqa: PLC0415  heavy: VTK
+    def _make_line(self, b, radius: float, system: System) -> None:
+        from vtkmodules.vtkCommonDataModel import vtkCellArray  # noqa: PLC0415  heavy: VTK
         from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
-        lines = vtkPolyData()
+        lines = window.polydata()
         lines.SetPoints(self.atoms.GetPoints())          # the atoms' own points: no update
         n = len(self._i)
         cells = vtkCellArray()
@@ -418,7 +418,7 @@ class LatticeScene(SceneBase):
                                               deep=True),
                       numpy_to_vtkIdTypeArray(conn, deep=True))
         lines.SetLines(cells)
-        self.bonds = pv.wrap(lines)
+        self.bonds = lines
         mapper = vtkOpenGLPolyDataMapper()
         mapper.SetInputData(lines)
         mapper.ScalarVisibilityOff()

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..model.physics import System
 from ..settings import BallCfg, CameraCfg, HolderCfg, SceneCfg, SpringCfg
-from . import backend, camera
+from . import backend, camera, window
 from .geometry import HelixFrame, HelixTube
 
 # VPython's lights: fixed in the world, (direction towards the light, colour).
@@ -27,6 +27,7 @@ SHININESS = 0.6          # VPython's default; specular exponent 100 * shininess
 SPHERE_SLICES = 30
 MULTI_SAMPLES = 4        # MSAA when anti-aliased
 TITLE_FONT_SIZE = 12
+TITLE_RGB = {"black": (0.0, 0.0, 0.0), "white": (1.0, 1.0, 1.0)}
 
 
 def _material(actor, color) -> None:
@@ -71,32 +72,23 @@ def title_color(background) -> str:
     return "black" if luminance > 0.5 else "white"
 
 
-def new_plotter(canvas: SceneCfg, antialias: bool = True):
-    """An off-screen plotter of the canvas's size and background, lit by VPython's :data:`LIGHTS`.
+def new_plotter(canvas: SceneCfg, antialias: bool = True) -> window.Window:
+    """An off-screen window of the canvas's size and background, lit by VPython's :data:`LIGHTS`.
 
     4x multisampling when ``antialias``. The backend must have been chosen
-    (:func:`springscene.view.backend.select`).
+    (:func:`springscene.view.backend.select`). Plain VTK (:mod:`springscene.view.window`):
+    no ``pyvista.plotting``, no matplotlib.
     """
-    import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
-
-    w, h = canvas.width, canvas.height
-    pl = pv.Plotter(off_screen=True, window_size=(w, h), lighting="none")
-    pl.ren_win.SetMultiSamples(MULTI_SAMPLES if antialias else 0)
-    pl.set_background(canvas.background)
-    for direction, intensity in LIGHTS:
-        light = pv.Light(position=direction, focal_point=(0, 0, 0),
-                         color=(intensity,) * 3, light_type="scene light")
-        light.positional = False
-        pl.add_light(light)
-    return pl
+    return window.Window((canvas.width, canvas.height), canvas.background,
+                         MULTI_SAMPLES if antialias else 0, LIGHTS)
 
 
 def add_title(plotter, canvas: SceneCfg) -> None:
     """The canvas's title centred along the top edge (no text when it is blank)."""
     if canvas.title.strip():
-        plotter.add_text(canvas.title.strip(), position="upper_edge",
-                         font_size=TITLE_FONT_SIZE, color=title_color(canvas.background),
-                         name="title")
+        plotter.add_actor(window.title_actor(canvas.title.strip(), TITLE_FONT_SIZE,
+                                             TITLE_RGB[title_color(canvas.background)]),
+                          name="title", pickable=False)
 
 
 class SceneBase:
@@ -211,8 +203,6 @@ class Scene(SceneBase):
                  holder: HolderCfg, spring: SpringCfg, ball: BallCfg, antialias: bool = True,
                  backend_name: str = "auto") -> None:
         pl = self._open(canvas, camera, antialias, backend_name)
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista and VTK
-
         self.ball_radius = ball.radius
 
         # holders: boxes centred on the fixed nodes
@@ -221,8 +211,8 @@ class Scene(SceneBase):
         for node in np.flatnonzero(system.fixed):
             c = system.pos[node]
             half = np.asarray(holder.size) / 2
-            box = pv.Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
-            actor = pl.add_mesh(box, smooth_shading=False)
+            box = window.box(np.ravel(np.column_stack([c - half, c + half])))
+            actor = pl.add_actor(window.mesh_actor(box))
             _material(actor, holder.color)
             actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
             self._holder_bounds.append(np.stack([c - half, c + half]))
@@ -232,9 +222,8 @@ class Scene(SceneBase):
         self._balls = []
         r = ball.radius
         for node in system.free:
-            sphere = pv.Sphere(radius=r, center=(0, 0, 0), theta_resolution=SPHERE_SLICES,
-                               phi_resolution=SPHERE_SLICES)
-            actor = pl.add_mesh(sphere, smooth_shading=True)
+            sphere = window.sphere(r, SPHERE_SLICES)
+            actor = pl.add_actor(window.mesh_actor(sphere, smooth_shading=True))
             _material(actor, ball.color)
             self._balls.append((int(node), actor))
 
@@ -246,11 +235,10 @@ class Scene(SceneBase):
             frame = HelixFrame()
             pts, normals = tube.points(system.pos[i], system.pos[j] - system.pos[i],
                                        frame.set_axis(system.pos[j] - system.pos[i]))
-            mesh = pv.PolyData(pts, tube.faces())
+            mesh = window.polydata(pts, tube.faces())
             mesh.point_data["Normals"] = normals
             mesh.GetPointData().SetActiveNormals("Normals")
-            actor = pl.add_mesh(mesh, smooth_shading=False, show_scalar_bar=False)
-            actor.GetMapper().ScalarVisibilityOff()
+            actor = pl.add_actor(window.mesh_actor(mesh))
             _material(actor, sc.color)
             self._springs.append((int(i), int(j), tube, frame, mesh, actor))
 

@@ -1,0 +1,300 @@
+"""An off-screen VTK render window on plain VTK: what the scenes drew with ``pv.Plotter``.
+
+``pyvista.plotting`` imports matplotlib's pyplot, and pyvista's core a score of VTK modules
+the scenes never use: with them a still or a GIF of the page's scene peaked at 345 MB,
+without them at 255-270 MB (issue 15). A :class:`Window` is one off-screen render
+window and renderer of a size, a background, multisampling and scene lights;
+:func:`mesh_actor` and :func:`title_actor` make the actors ``pv.Plotter.add_mesh`` and
+``add_text(position="upper_edge")`` made, with the same property values (pyvista 0.46:
+colours rounded to 1/255, a ``vtkDataSetMapper`` with scalars off, point normals
+computed for smooth shading, a ``vtkCornerAnnotation`` scaled by half the font size);
+:func:`polydata`, :func:`box` and :func:`sphere` make the meshes ``pv.PolyData``,
+``pv.Box`` and ``pv.Sphere`` made, bit for bit. The pictures are the ones pyvista drew.
+
+The backend must have been chosen (:func:`springscene.view.backend.select`) before a
+window is made.
+"""
+
+from __future__ import annotations
+
+import functools
+
+import numpy as np
+
+UPPER_EDGE = 7        # vtkCornerAnnotation's text positions: 7 is the top edge's middle
+
+
+def pyvista_color(color) -> tuple[float, float, float]:
+    """A colour as pyvista hands it to VTK: each channel rounded to a multiple of 1/255."""
+    return tuple(round(255 * float(c)) / 255 for c in color)
+
+
+@functools.cache
+def _renderer_class():
+    """``vtkOpenGLRenderer`` with ``actors``: its actors by name, as pyvista's renderer."""
+    from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLRenderer  # noqa: PLC0415  heavy: VTK
+
+    class Renderer(vtkOpenGLRenderer):
+        """A renderer that keeps its actors by name (``actors``)."""
+
+        def __init__(self) -> None:
+            super().__init__()
+            self._named = {}
+
+        @property
+        def actors(self) -> dict:
+            """The actors added through :meth:`Window.add_actor`, by name."""
+            return dict(self._named)
+
+    return Renderer
+
+
+class Window:
+    """An off-screen render window with one renderer.
+
+    Parameters
+    ----------
+    size : (width, height)
+        In pixels.
+    background : (r, g, b)
+        In 0..1 (rounded to 1/255, as pyvista's ``set_background``).
+    multisamples : int
+        MSAA samples; 0 for none.
+    lights : sequence of ((x, y, z), intensity)
+        Directional scene lights, each shining from ``(x, y, z)`` towards the origin
+        in gray ``intensity`` (rounded to 1/255, as ``pv.Light``'s colour).
+    """
+
+    camera_set = False        # set by view.scene.apply_view, as on a pv.Plotter
+
+    def __init__(self, size: tuple[int, int], background, multisamples: int = 0,
+                 lights=()) -> None:
+        # the OpenGL classes and the FreeType text renderer register VTK's factories
+        import vtkmodules.vtkRenderingFreeType  # noqa: F401, PLC0415  heavy: VTK
+        import vtkmodules.vtkRenderingOpenGL2  # noqa: F401, PLC0415  heavy: VTK
+        from vtkmodules.vtkRenderingCore import vtkRenderWindow  # noqa: PLC0415  heavy: VTK
+
+        self.ren_win = vtkRenderWindow()       # the class VTK_DEFAULT_OPENGL_WINDOW names
+        self.ren_win.SetOffScreenRendering(True)
+        self.ren_win.SetSize(int(size[0]), int(size[1]))
+        self.ren_win.SetMultiSamples(int(multisamples))
+        self.ren_win.SetAlphaBitPlanes(True)
+        self.renderer = _renderer_class()()
+        self.renderer.SetAutomaticLightCreation(False)
+        self.renderer.SetBackground(*pyvista_color(background))
+        self.ren_win.AddRenderer(self.renderer)
+        for direction, intensity in lights:
+            self.add_light(direction, intensity)
+
+    @property
+    def window_size(self) -> tuple[int, int]:
+        return tuple(self.ren_win.GetSize())
+
+    def add_light(self, direction, intensity: float):
+        """A directional scene light from ``direction`` towards the origin; returns it."""
+        from vtkmodules.vtkRenderingCore import vtkLight  # noqa: PLC0415  heavy: VTK
+
+        light = vtkLight()
+        light.SetLightTypeToSceneLight()
+        light.SetPosition(*direction)
+        light.SetFocalPoint(0.0, 0.0, 0.0)
+        gray = pyvista_color((intensity,) * 3)
+        light.SetAmbientColor(*gray)
+        light.SetDiffuseColor(*gray)
+        light.SetSpecularColor(*gray)
+        light.SetPositional(False)
+        self.renderer.AddLight(light)
+        return light
+
+    def add_actor(self, actor, name: str | None = None, pickable: bool = True):
+        """Add a prop (a 3D actor or a 2D text); ``name`` replaces an actor of that name."""
+        name = name or f"{type(actor).__name__}({actor.__this__})"
+        if name in self.renderer._named:
+            self.remove_actor(self.renderer._named[name])
+        actor.SetPickable(pickable)
+        self.renderer.AddViewProp(actor)
+        self.renderer._named[name] = actor
+        return actor
+
+    def remove_actor(self, actor, render: bool = False) -> bool:
+        """Remove an actor (or the actor of that name); True when there was one.
+        ``render`` is pv.Plotter's argument, accepted and ignored (nothing renders here
+        until the next frame)."""
+        named = self.renderer._named
+        if isinstance(actor, str):
+            actor = named.get(actor)
+        names = [k for k, v in named.items() if v is actor]
+        for k in names:
+            del named[k]
+        if actor is None or not self.renderer.HasViewProp(actor):
+            return bool(names)
+        self.renderer.RemoveViewProp(actor)
+        return True
+
+    def render(self) -> None:
+        self.ren_win.Render()
+
+    def close(self) -> None:
+        """Release the window's OpenGL context and its actors."""
+        if self.ren_win is None:
+            return
+        self.renderer.RemoveAllViewProps()
+        self.renderer.RemoveAllLights()
+        self.renderer._named.clear()
+        self.ren_win.Finalize()
+        self.ren_win.RemoveRenderer(self.renderer)
+        self.ren_win = None
+
+
+def mesh_actor(mesh, smooth_shading: bool = False):
+    """An actor for a ``vtkPolyData`` as ``pv.Plotter.add_mesh(mesh, smooth_shading=...)``
+    made it (no colour: the caller sets the material).
+
+    Smooth shading computes point normals into ``mesh`` in place when it has none
+    (pyvista's ``compute_normals(cell_normals=False)``: no splitting, consistent
+    ordering, non-manifold traversal, feature angle 30 degrees).
+    """
+    from vtkmodules.vtkRenderingCore import vtkActor, vtkDataSetMapper  # noqa: PLC0415  heavy: VTK
+
+    if smooth_shading and mesh.GetPointData().GetNormals() is None:
+        _compute_point_normals(mesh)
+    mapper = vtkDataSetMapper()
+    mapper.SetInputData(mesh)
+    mapper.SetInterpolateScalarsBeforeMapping(True)
+    mapper.ScalarVisibilityOff()
+    actor = vtkActor()
+    actor.SetMapper(mapper)
+    prop = actor.GetProperty()
+    prop.SetPointSize(5.0)           # pyvista's theme; nothing here draws points
+    prop.SetEdgeColor(0.0, 0.0, 0.0)
+    return actor
+
+
+def _compute_point_normals(mesh) -> None:
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals  # noqa: PLC0415  heavy: VTK
+
+    normals = vtkPolyDataNormals()
+    normals.SetComputeCellNormals(False)
+    normals.SetComputePointNormals(True)
+    normals.SetSplitting(False)
+    normals.SetFlipNormals(False)
+    normals.SetConsistency(True)
+    normals.SetAutoOrientNormals(False)
+    normals.SetNonManifoldTraversal(True)
+    normals.SetFeatureAngle(30.0)
+    normals.SetInputData(mesh)
+    normals.Update()
+    out = normals.GetOutput()
+    out.GetPointData().SetActiveNormals("Normals")
+    mesh.ShallowCopy(out)
+
+
+def title_actor(text: str, font_size: int, color):
+    """A title along the top edge's middle, as ``pv.Plotter.add_text(text,
+    position="upper_edge", font_size=font_size, color=color)`` drew it: a
+    ``vtkCornerAnnotation`` whose font scales with the window, Arial, no shadow."""
+    from vtkmodules.vtkRenderingAnnotation import vtkCornerAnnotation  # noqa: PLC0415  heavy: VTK
+
+    actor = vtkCornerAnnotation()
+    actor.SetText(UPPER_EDGE, text)
+    actor.SetLinearFontScaleFactor(font_size // 2)
+    prop = actor.GetTextProperty()
+    prop.SetColor(*pyvista_color(color))
+    prop.SetFontFamilyToArial()
+    prop.SetOrientation(0.0)
+    prop.SetShadow(False)
+    return actor
+
+
+# -- meshes on plain VTK: what pv.PolyData, pv.Box and pv.Sphere made ---------------------
+
+@functools.cache
+def _polydata_class():
+    """VTK's own ``PolyData`` (``points``, ``point_data``, ``bounds`` as numpy views, VTK
+    9.4's data model) with pyvista's ``n_points``."""
+    from vtkmodules.util.data_model import PolyData as VTKPolyData  # noqa: PLC0415  heavy: VTK
+
+    class PolyData(VTKPolyData):
+        """A ``vtkPolyData`` with numpy views of its points and arrays."""
+
+        @property
+        def n_points(self) -> int:
+            return self.GetNumberOfPoints()
+
+    return PolyData
+
+
+def polydata(points=None, faces=None, source=None):
+    """A ``vtkPolyData`` of ``points`` (n, 3), their dtype kept, and ``faces`` in VTK's flat
+    ``[n, i0, i1, ..., n, ...]`` layout; with no faces, one vertex cell a point (as
+    ``pv.PolyData(points)``). ``source``, another polydata, is shallow-copied instead;
+    with neither, the polydata is empty. Its ``points``, ``point_data[name]`` and
+    ``bounds`` are VTK's numpy views (``vtkmodules.util.data_model``)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkCommonCore import vtkPoints  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkCommonDataModel import vtkCellArray  # noqa: PLC0415  heavy: VTK
+
+    mesh = _polydata_class()()
+    if source is not None or points is None:
+        if source is not None:
+            mesh.ShallowCopy(source)
+        return mesh
+    pts = np.ascontiguousarray(points)
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(pts, deep=True))
+    mesh.SetPoints(vtk_points)
+    cells = vtkCellArray()
+    if faces is None:
+        n = len(pts)
+        cells.SetData(numpy_to_vtkIdTypeArray(np.arange(n + 1, dtype=np.int64), deep=True),
+                      numpy_to_vtkIdTypeArray(np.arange(n, dtype=np.int64), deep=True))
+        mesh.SetVerts(cells)
+    else:
+        cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(
+            np.ascontiguousarray(faces, dtype=np.int64), deep=True))
+        mesh.SetPolys(cells)
+    return mesh
+
+
+def box(bounds):
+    """An axis-aligned box, ``bounds`` (xmin, xmax, ymin, ymax, zmin, zmax): six quads
+    (``pv.Box(bounds=...)``)."""
+    from vtkmodules.vtkFiltersSources import vtkTessellatedBoxSource  # noqa: PLC0415  heavy: VTK
+
+    src = vtkTessellatedBoxSource()
+    src.SetLevel(0)
+    src.QuadsOn()
+    src.SetBounds(*(float(b) for b in bounds))
+    src.Update()
+    return polydata(None, source=src.GetOutput())
+
+
+def sphere(radius: float, resolution: int):
+    """A UV sphere about the origin with ``resolution`` slices and stacks, and its point
+    normals, as ``pv.Sphere`` made it: VTK's sphere source turned twice (pyvista turns it
+    90 degrees about y and then to its default direction +z), which gives the same
+    points and renormalises the normals."""
+    from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkFiltersGeneral import vtkTransformFilter  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: PLC0415  heavy: VTK
+
+    src = vtkSphereSource()
+    src.SetRadius(float(radius))
+    src.SetThetaResolution(int(resolution))
+    src.SetPhiResolution(int(resolution))
+    src.Update()
+    out = src.GetOutput()
+    for turn in (_PV_SPHERE_TURN, _PV_SPHERE_DIRECTION):
+        transform = vtkTransform()
+        transform.SetMatrix([float(v) for row in turn for v in row])
+        step = vtkTransformFilter()
+        step.SetInputData(out)
+        step.SetTransform(transform)
+        step.Update()
+        out = step.GetOutput()
+    return polydata(None, source=out)
+
+
+# pv.Sphere's two turns: 90 degrees about y, then the +z direction's frame
+_PV_SPHERE_TURN = ((0, 0, 1, 0), (0, 1, 0, 0), (-1, 0, 0, 0), (0, 0, 0, 1))
+_PV_SPHERE_DIRECTION = ((0, 0, -1, 0), (0, 1, 0, 0), (1, 0, 0, 0), (0, 0, 0, 1))
