@@ -30,7 +30,7 @@ from .science import analysis, matter
 from .science import sweep as sweeps
 from .errors import UserError
 from .settings import Config
-from .vpython.runner import ProgramResult, run_program
+from .vpython.runner import ProgramResult, check_lod, run_program
 from .vpython.supervise import run_supervised
 
 RenderStats = pipeline.RenderStats
@@ -111,6 +111,7 @@ def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
     in a child process that cannot leave anything behind, with ``timeout`` and
     ``max_memory`` (:func:`springscene.vpython.supervise.run_supervised`); otherwise in
     this process (``on_frame`` needs that)."""
+    check_lod(options.get("lod"))
     if supervised and options.get("on_frame") is None:
         return run_supervised(program, out, **options)
     unsupervised = [k for k in ("timeout", "max_memory") if options.pop(k, None) is not None]

@@ -243,8 +243,8 @@ class Extents:
             block = self.blocks.get(kind) or _Block.empty()
             self.blocks[kind] = block = block.measured(kind, bulk.get(kind, []))
             z = block.z_shown(self.center, self.c)
-            if len(z):
-                zs.append(z.max(axis=0).tolist())
+            if z is not None:
+                zs.append(z)
         return zs
 
     def _store(self, o, key, box) -> list:
@@ -424,11 +424,20 @@ class _Block:
         return np.array([r if r < 0 or mine[r] is o else -1 for r, o in zip(row.tolist(), objs)],
                         dtype=np.int64).reshape(-1)
 
-    def z_shown(self, center, c: float) -> np.ndarray:
-        """(zx, zy) of the objects shown at the last pass (compute_autoscale)."""
-        b = self.boxes[self.shown]
-        d = np.maximum(np.abs(b[:, 0] - center), np.abs(b[:, 1] - center))
-        return np.column_stack([d[:, 0] * c + d[:, 2], d[:, 1] * c + d[:, 2]])
+    def z_shown(self, center, c: float) -> list[float] | None:
+        """The largest (zx, zy) of the objects shown at the last pass (compute_autoscale),
+        None when none was; worked out a chunk at a time."""
+        best = None
+        center = np.asarray(center, dtype=float)
+        for s in range(0, len(self.ids), CHUNK):
+            part = slice(s, s + CHUNK)
+            b = self.boxes[part][self.shown[part]]
+            if not len(b):
+                continue
+            d = np.maximum(np.abs(b[:, 0] - center), np.abs(b[:, 1] - center))
+            z = [float(np.max(d[:, 0] * c + d[:, 2])), float(np.max(d[:, 1] * c + d[:, 2]))]
+            best = z if best is None else [max(best[0], z[0]), max(best[1], z[1])]
+        return best
 
     def keep(self, alive: set) -> "_Block":
         """Only the rows of objects still on the canvas."""

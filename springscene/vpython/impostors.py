@@ -12,14 +12,14 @@ and normal, which VTK's own light code then shades (so GlowScript's rules,
 Two things make it VPython's sphere:
 
 * **Only small spheres**: those the level of detail (:func:`.draw.sphere_slices`)
-  would draw with 16 slices or fewer (:data:`MAX_SLICES`), about 5.3 px of radius and
+  would draw with 16 slices or fewer (:data:`MAX_SLICES`), about 5.2 px of radius and
   less, at the radius whose circle has the area of VPython's 30-slice outline
   (:data:`EQUAL_AREA`). Against VPython's full mesh, % of pixels off by more than 24/255
   on clouds of 1,000-3,000 spheres 1-5 px across, impostors / the cut-down meshes drawn
   before: draft 0.041 / 0.05-0.50, 0.027 / 0.504, 0.004 / 0.246 (the project's image
   tolerance is 0.05 %); anti-aliased 0.097, 0.136 / 0.937, 0.122 / 0.343 (the rest:
   the highlight of a sphere one or two pixels across, at a pixel or the next). Between
-  5.3 and 11.7 px the exact circle strays from the 30-slice outline by 0.03-0.06 px and
+  5.2 and 11.7 px the exact circle strays from the 30-slice outline by 0.03-0.06 px and
   anti-aliased puts up to 0.15 % of pixels off (the lattice example: 0.055 %), so there
   the mesh is kept, cut down to 20 or 24 slices, and over 11.7 px VPython's 30.
 * **Anti-aliased like a mesh** (:data:`COVERAGE_RULES`): VTK's shader discards whole
@@ -96,10 +96,12 @@ def available(render_window) -> bool:
 def small(radius_px: np.ndarray, steps: tuple[int, ...], tolerance: float) -> np.ndarray:
     """Which spheres of ``radius_px`` pixels the level of detail (``steps``, most
     first, and the sagitta ``tolerance``) would draw with :data:`MAX_SLICES` slices or
-    fewer; none when it keeps one detail (:func:`.draw.full_detail`)."""
+    fewer; none when it keeps one detail (:func:`.draw.full_detail`), and none of a
+    negative radius (drawn as its mesh, scaled by its negative size)."""
+    radius_px = np.asarray(radius_px)
     if len(steps) < 2:
         return np.zeros(np.shape(radius_px), dtype=bool)
-    return np.asarray(radius_px) * (1 - math.cos(math.pi / MAX_SLICES)) <= tolerance
+    return (radius_px > 0) & (radius_px * (1 - math.cos(math.pi / MAX_SLICES)) <= tolerance)
 
 
 def round_spheres(size: np.ndarray) -> np.ndarray:

@@ -12,6 +12,7 @@ runs this in a child process that owns nothing (:mod:`.supervise`, :mod:`.child`
 
 from __future__ import annotations
 
+import numbers
 import os
 import sys
 import time
@@ -23,7 +24,7 @@ from pathlib import Path
 from .. import vpython as vp
 from ..errors import OutputError, ProgramError, UserError
 from ..outputs import VIDEO_FORMATS, atomic_path, check_output, check_video_fps, write_png
-from . import attachments, autoscale, dialects, glowscript, runtime, visual6, widgets
+from . import attachments, autoscale, dialects, draw, glowscript, runtime, visual6, widgets
 from .vector import set_lenient
 from .canvas import CanvasSizeError, canvas
 from .film import Film, Printed
@@ -163,10 +164,25 @@ def _restore_modules(saved: dict) -> None:
             sys.modules[name] = module
 
 
+MAX_LOD_PX = 5.0      # --lod: coarser than this and helices lose their shape
+
+
+def check_lod(px) -> None:
+    """``lod`` (``--lod``): None, or a number of pixels more than 0 and at most
+    :data:`MAX_LOD_PX`; anything else is a one-line :class:`UserError`."""
+    if px is None:
+        return
+    ok = isinstance(px, numbers.Real) and not isinstance(px, bool) and 0 < px <= MAX_LOD_PX
+    if not ok:                               # nan fails the comparison
+        raise UserError(f"--lod {px!r}: the level of detail must be more than 0 and at "
+                        f"most {MAX_LOD_PX:g} pixels")
+
+
 def run_program(program, out, *, duration: float | None = None, frames: int | None = None,
                 fps: int = DEFAULT_FPS, backend: str = "auto", antialias: bool = True,
                 overlays: tuple[str, ...] = (), page: bool = True, canvas_only: bool = False,
-                on_frame=None, on_dialect=None, quality: str = "medium") -> ProgramResult:
+                on_frame=None, on_dialect=None, quality: str = "medium",
+                lod: float | None = None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF) or final still (PNG).
 
     A frame is the program's page as VPython lays it out (titles, canvases, captions,
@@ -175,16 +191,18 @@ def run_program(program, out, *, duration: float | None = None, frames: int | No
     video), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
     ``on_frame(index, image)`` is called for each frame taken (for tests);
     ``on_dialect(dialect)`` once the program's dialect is known, before it runs.
+    ``lod``: helices drawn coarser, within ``lod`` pixels (:func:`.draw.coarser_detail`).
     """
     path, out, still, budget, limit = _check_request(program, out, duration, frames, fps,
                                                      overlays)
+    check_lod(lod)
     code, dialect = _compile(path)
     if on_dialect is not None:
         on_dialect(dialect)
     vp.reset()
     start = time.perf_counter()
     images: list[Path] = []
-    with atomic_path(out) as tmp:
+    with atomic_path(out) as tmp, draw.coarser_detail(lod):
         film = Film(None if still else tmp, fps, overlays, backend, antialias, on_frame,
                     canvas_only, quality=quality)
 

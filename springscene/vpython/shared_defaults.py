@@ -57,9 +57,9 @@ def stored(cls, values: dict) -> tuple:
 
 def seed_keys(cls, names) -> None:
     """Put ``names`` first in ``cls``'s key table, before any object of it is made (a
-    throw-away object given them; a class of the program's own with ``__del__`` is left
-    as it is, so its probe runs none of its code)."""
-    if "__del__" in cls.__dict__:
+    throw-away object given them; a class with a ``__del__`` of its own or inherited, a
+    program's, is left as it is, so its probe runs none of its code)."""
+    if getattr(cls, "__del__", None) is not None:
         return
     probe = object.__new__(cls)
     for name in names:

@@ -152,3 +152,58 @@ def test_autoscale_off_freezes_what_autoscale_reached(vp):
     b.pos = vp.vector(30, 0, 0)
     autoscale.at_render()
     assert vp.scene.range == pytest.approx(r)
+
+
+def _random_passes(vp, rng, passes: int = 60) -> list[float]:
+    """The range after each of ``passes`` autoscale passes over a canvas whose solids are
+    added, deleted, hidden and shown again, moved, turned and resized, with the centre
+    moved now and then."""
+    objs, ranges = [], []
+    kinds = (vp.sphere, vp.box, vp.cylinder, vp.helix, vp.cone)
+    for _ in range(passes):
+        for _ in range(int(rng.integers(0, 6))):
+            objs.append(kinds[int(rng.integers(len(kinds)))](
+                pos=vp.vector(*rng.normal(size=3) * 3), size=vp.vector(*rng.random(3) + 0.1)))
+        for o in list(objs):
+            roll = rng.random()
+            if roll < 0.05:
+                o.visible = False
+                objs.remove(o)
+                del o
+            elif roll < 0.15:
+                o.visible = not o.visible
+            elif roll < 0.35:
+                o.pos = o.pos + vp.vector(*rng.normal(size=3))
+            elif roll < 0.45:
+                o.axis = vp.vector(*rng.normal(size=3))
+            elif roll < 0.5:
+                o.size = vp.vector(*rng.random(3) * 2 + 0.1)
+        if rng.random() < 0.05:
+            vp.scene.center = vp.vector(*rng.normal(size=3))
+        ranges.append(measured(vp))
+    return ranges
+
+
+def test_solids_in_columns_bound_as_one_by_one(vp, monkeypatch):
+    """Autoscale's columns (autoscale._Block: ids, digests and boxes of the solids, worked
+    through in chunks, here of 7) give the ranges the object-by-object path gives, pass
+    after pass, through objects added, deleted (their ids reused), hidden and shown
+    again (their extent kept), moved, turned and resized, and a centre that moves."""
+    monkeypatch.setattr(autoscale, "CHUNK", 7)
+    columns = _random_passes(vp, np.random.default_rng(5))
+    vp.reset()
+    monkeypatch.setattr(autoscale, "BULK", ())
+    one_by_one = _random_passes(vp, np.random.default_rng(5))
+    assert len(columns) == 60 and len(set(columns)) > 5
+    assert columns == pytest.approx(one_by_one, rel=1e-12)
+
+
+def test_digest_tells_rows_apart():
+    """Two rows of floats that differ in one bit have different digests; equal rows the
+    same (the key an object's box is kept by)."""
+    rows = np.random.default_rng(1).normal(size=(1000, 12))
+    flipped = rows.copy()
+    flipped.view(np.uint64)[:, 7] ^= np.uint64(1)
+    assert np.array_equal(autoscale.digest(rows), autoscale.digest(rows.copy()))
+    assert np.all(autoscale.digest(rows) != autoscale.digest(flipped))
+    assert len(set(autoscale.digest(rows).tolist())) == 1000

@@ -87,7 +87,7 @@ def test_impostors_draw_the_full_detail_spheres(n, radius, antialias):
 
 
 def test_big_spheres_keep_the_mesh_and_ellipsoids_too():
-    """A sphere over ~5.3 px of radius keeps a mesh (VPython's 30 slices for the biggest;
+    """A sphere over ~5.2 px of radius keeps a mesh (VPython's 30 slices for the biggest;
     an exact circle strays from its outline by more there); an ellipsoid among small
     spheres is not round, so it keeps a mesh too."""
     vp.scene.width, vp.scene.height = 400, 300
@@ -122,6 +122,35 @@ def test_zooming_in_turns_impostors_into_meshes():
     assert not batch.lod[1].any() and batch.instances == len(balls)
     assert not batch.impostors.actor.GetVisibility()
     assert (near > 0).sum() > 50 * (far > 0).sum()
+    r.close()
+
+
+def test_every_frame_shows_the_spheres_as_the_camera_comes_and_goes():
+    """Unchanged spheres, the camera moving near (meshes), far (impostors) and back,
+    twice: each frame shows them (a part hidden at one detail is shown again)."""
+    vp.scene.width, vp.scene.height = 300, 200
+    for i in range(3):
+        vp.sphere(pos=vp.vector(i * 0.5, 0, 0), radius=0.2)
+    r = Renderer(vp.scene, antialias=False)
+    lit = []
+    for rng in (1, 20, 1, 20, 1):
+        vp.scene.range = rng
+        lit.append(int((r.frame().max(axis=2) > 0).sum()))
+    r.close()
+    assert lit[0] == lit[2] == lit[4] > 1000 and lit[1] == lit[3] > 0, lit
+
+
+def test_a_negative_radius_keeps_its_mesh():
+    """A sphere of negative radius is drawn as its mesh (a negative size), never as an
+    impostor of negative radius, however small on screen."""
+    vp.scene.width, vp.scene.height = 300, 200
+    vp.scene.range = 20
+    vp.sphere(radius=-0.2)
+    vp.sphere(pos=vp.vector(2, 0, 0), radius=0.2)
+    r = Renderer(vp.scene, antialias=False)
+    r.frame()
+    (batch,) = [b for k, b in r._batches.items() if k[0] == "sphere"]
+    assert batch.lod[1].tolist() == [False, True]
     r.close()
 
 

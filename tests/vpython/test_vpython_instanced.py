@@ -131,7 +131,10 @@ MEMORY_PROGRAM = textwrap.dedent("""\
     import json, resource, sys
     import numpy as np
     import springscene.vpython as vp
+    from springscene.vpython import draw
     from springscene.vpython.draw import Renderer
+
+    draw.IMPOSTORS = False              # the instances' cost (impostors: their own test)
 
     def rss():
         return int(open("/proc/self/statm").read().split()[1]) * 4096
@@ -151,13 +154,13 @@ MEMORY_PROGRAM = textwrap.dedent("""\
 
 
 def test_memory_of_many_small_spheres(tmp_path):
-    """What a sphere costs: 20,000 more small spheres (a pixel or two across) in a
-    drafted still, measured in fresh processes (the Python objects, the instances,
-    llvmpipe's buffers): 2.7 to 5.2 KB a sphere (the allocators' pools make it vary),
-    1.4 KB of it the Python objects; the bound is 10 KB. Placing
-    each sphere's vertices cost about 28 KB a sphere, and 90 KB in the first frame
-    (drawn at full detail before the camera was placed). Anti-aliased, llvmpipe's
-    4x multisampling holds about 60 bytes per triangle drawn: 20 KB a sphere."""
+    """What a sphere drawn as an instance of the mesh costs: 20,000 more small spheres
+    (a pixel or two across) in a drafted still, measured in fresh processes (the Python
+    objects, the instances, llvmpipe's buffers), bound 10 KB. Placing each sphere's
+    vertices cost about 28 KB a sphere, and 90 KB in the first frame (drawn at full detail
+    before the camera was placed). Anti-aliased, llvmpipe's 4x multisampling holds about
+    60 bytes per triangle drawn: 20 KB a sphere. Small spheres are impostors now;
+    test_vpython_impostors.py measures what they cost."""
     prog = tmp_path / "mem.py"
     prog.write_text(MEMORY_PROGRAM)
     grew = []

@@ -10,6 +10,7 @@ small helix gets fewer chords and sides, the fewest whose polygons stay within
 from __future__ import annotations
 
 import contextlib
+import io
 import math
 
 import numpy as np
@@ -310,3 +311,76 @@ def test_no_frustum_culler_and_the_same_picture():
     with_culler = r.frame()
     r.close()
     assert without.any() and np.array_equal(without, with_culler)
+
+
+# ---- --lod: coarser helices on request ---------------------------------------------------
+
+# --lod 0.3 against full detail (the lattice below and AtomicSolid at 900 x 600, measured):
+# 1.4-2.5 % of pixels off by more than 24/255, mean about 1 level of 255
+COARSE_BAD_FRACTION = 0.03
+COARSE_MEAN_DIFF = 1.5
+
+
+@pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
+def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
+    """``springscene vpython --lod 0.3`` (:func:`draw.coarser_detail`): AtomicSolid-like
+    springs with fewer chords and sides, anti-aliased too, the picture within the stated
+    bound of full detail but outside the image tolerance; the detail restored after."""
+
+    def picture(full: bool = False, px: float | None = None):
+        with draw.full_detail() if full else draw.coarser_detail(px):
+            vp.reset()
+            vp.scene.width, vp.scene.height = 450, 300
+            _lattice(2)
+            r = Renderer(vp.scene, antialias=antialias)
+            image = r.frame()
+            sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
+            r.close()
+        return image, sig
+
+    full, _ = picture(full=True)
+    coarse, sig = picture(px=0.3)
+    chords, sides = sig[1][2:4]
+    assert chords < 60 and sides < 16
+    bad, mean = compare(coarse, full)
+    assert MAX_BAD_FRACTION < bad <= COARSE_BAD_FRACTION and mean <= COARSE_MEAN_DIFF
+    assert (helix_batch.LOD_PX, helix_batch.SIDE_SHARE) == (0.03, 0.5)      # restored
+    assert draw.FULL_HELICES_ANTIALIASED
+    _, default_sig = picture()
+    if antialias:
+        assert default_sig[1][2:4] == (60, 16)
+    else:                                   # the default's finer detail than --lod 0.3's
+        assert default_sig[1][2] > chords and default_sig[1][3] > sides
+
+
+@pytest.mark.parametrize("value, message", [
+    ("0", "--lod: 0: the level of detail must be more than 0 and at most 5 pixels"),
+    ("-1", "--lod: -1: the level of detail must be more than 0 and at most 5 pixels"),
+    ("nan", "--lod: nan: the level of detail must be more than 0 and at most 5 pixels"),
+    ("6", "--lod: 6: the level of detail must be more than 0 and at most 5 pixels"),
+    ("x", "--lod: 'x' is not a number of pixels")])
+def test_lod_flag_refuses_what_is_not_a_detail(tmp_path, value, message):
+    from springscene.app import cli
+
+    prog = tmp_path / "p.py"
+    prog.write_text("from vpython import *\nhelix()\n")
+    with pytest.raises(SystemExit) as exc, contextlib.redirect_stderr(io.StringIO()) as err:
+        cli.main(["vpython", str(prog), "--out", str(tmp_path / "x.png"), f"--lod={value}"])
+    assert exc.value.code == 2
+    lines = err.getvalue().strip().splitlines()
+    assert len(lines) == 1 and lines[0].endswith(message), lines
+    assert not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("value", ["0.3", float("nan"), -1, 0, 50, True])
+def test_lod_option_of_the_library_is_checked_as_the_flag(tmp_path, value):
+    """``jobs.vpython(..., lod=...)`` (the API's ``run_vpython``): the flag's rule, one
+    line naming --lod, before anything runs."""
+    from springscene import jobs
+    from springscene.errors import UserError
+
+    prog = tmp_path / "p.py"
+    prog.write_text("from vpython import *\nhelix()\n")
+    with pytest.raises(UserError, match="^--lod .*: the level of detail must be more than 0"):
+        jobs.vpython(prog, tmp_path / "x.png", lod=value)
+    assert not (tmp_path / "x.png").exists()

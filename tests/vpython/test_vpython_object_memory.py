@@ -240,3 +240,20 @@ def test_drawing_adds_nothing_to_the_objects(vp):
     for o in objs:
         assert not any(isinstance(x, dict) for x in gc.get_referents(o)), o
         assert set(o.__dict__) - set(standard._KEYS) <= {"_opacity"}, o
+
+
+def test_a_program_s_inherited_del_is_never_run_on_a_probe(vp):
+    """A program's class with ``__del__``, and a subclass of it: defining them makes no
+    throw-away object, so that ``__del__`` runs only for the program's own objects."""
+    calls = []
+
+    class Tracked(vp.sphere):
+        def __del__(self):
+            calls.append(type(self).__name__)
+
+    class Ball(Tracked):
+        pass
+
+    gc.collect()
+    assert calls == []                      # no probe of Tracked or Ball was made
+    assert isinstance(Ball(pos=vp.vector(2, 0, 0)), Tracked)
