@@ -90,6 +90,21 @@ class Batch:
             self.mesh.active_texture_coordinates[:] = uv
             tcoords.Modified()
 
+    def _adopt(self, mapper, style: dict) -> None:
+        """The batch's actor for ``mapper`` (its points' ``rgb`` the colours, as they are),
+        put in the renderer and given ``style``."""
+        from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy: vtk
+
+        mapper.ScalarVisibilityOn()
+        mapper.SetScalarModeToUsePointFieldData()
+        mapper.SelectColorArray("rgb")
+        mapper.SetColorModeToDirectScalars()
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        self.plotter.renderer.AddActor(actor)
+        self.actor = actor
+        self._style(style)
+
     def _style(self, style: dict) -> None:
         prop = self.actor.GetProperty()
         prop.SetInterpolationToPhong()

@@ -142,21 +142,12 @@ class SphereImpostors(Batch):
             self.mesh.shallow_copy(mesh)
 
     def _new_actor(self, style: dict) -> None:
-        from vtkmodules.vtkRenderingCore import vtkActor  # noqa: PLC0415  heavy: vtk
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy: vtk
 
         m = vtkOpenGLSphereMapper()
         m.SetInputData(self.mesh)
         m.SetScaleArray("radius")
-        m.ScalarVisibilityOn()
-        m.SetScalarModeToUsePointFieldData()
-        m.SelectColorArray("rgb")
-        m.SetColorModeToDirectScalars()
-        actor = vtkActor()
-        actor.SetMapper(m)
-        self.plotter.renderer.AddActor(actor)
-        self.actor = actor
-        self._style(style)
+        self._adopt(m, style)
 
     def _shade(self) -> None:
         shade_as_glowscript(self.actor, False)

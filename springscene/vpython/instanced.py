@@ -117,7 +117,7 @@ class InstancedBatch(Batch):
             self.mesh.shallow_copy(pd)
 
     def _new_actor(self, source, style) -> None:
-        from vtkmodules.vtkRenderingCore import vtkActor, vtkGlyph3DMapper  # noqa: PLC0415  heavy: vtk
+        from vtkmodules.vtkRenderingCore import vtkGlyph3DMapper  # noqa: PLC0415  heavy: vtk
 
         m = vtkGlyph3DMapper()
         m.SetInputData(self.mesh)
@@ -127,12 +127,4 @@ class InstancedBatch(Batch):
         m.SetScaleFactor(1.0)
         m.SetOrientationArray("orient")
         m.SetOrientationModeToQuaternion()
-        m.ScalarVisibilityOn()
-        m.SetScalarModeToUsePointFieldData()
-        m.SelectColorArray("rgb")
-        m.SetColorModeToDirectScalars()
-        actor = vtkActor()
-        actor.SetMapper(m)
-        self.plotter.renderer.AddActor(actor)
-        self.actor = actor
-        self._style(style)
+        self._adopt(m, style)

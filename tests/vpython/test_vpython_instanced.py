@@ -4,11 +4,7 @@ few hundred bytes an object, and a level of detail from the first frame on."""
 
 from __future__ import annotations
 
-import json
 import math
-import subprocess
-import sys
-import textwrap
 
 import numpy as np
 import pytest
@@ -125,48 +121,3 @@ def test_objects_added_and_removed_resize_the_instances():
     assert batch.instances == 2
     r.close()
     assert (three.astype(int) - one).any()
-
-
-MEMORY_PROGRAM = textwrap.dedent("""\
-    import json, resource, sys
-    import numpy as np
-    import springscene.vpython as vp
-    from springscene.vpython import draw
-    from springscene.vpython.draw import Renderer
-
-    draw.IMPOSTORS = False              # the instances' cost (impostors: their own test)
-
-    def rss():
-        return int(open("/proc/self/statm").read().split()[1]) * 4096
-
-    n = int(sys.argv[1])
-    vp.reset()
-    r = Renderer(vp.scene, antialias=False)
-    r.frame()
-    before = rss()
-    P = np.random.default_rng(1).random((n, 3)) * 10
-    balls = [vp.sphere(pos=vp.vector(*p), radius=0.05) for p in P]
-    r.frame()
-    r.frame()
-    print(json.dumps({"grew": rss() - before,
-                      "peak": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024}))
-""")
-
-
-def test_memory_of_many_small_spheres(tmp_path):
-    """What a sphere drawn as an instance of the mesh costs: 20,000 more small spheres
-    (a pixel or two across) in a drafted still, measured in fresh processes (the Python
-    objects, the instances, llvmpipe's buffers), bound 10 KB. Placing each sphere's
-    vertices cost about 28 KB a sphere, and 90 KB in the first frame (drawn at full detail
-    before the camera was placed). Anti-aliased, llvmpipe's 4x multisampling holds about
-    60 bytes per triangle drawn: 20 KB a sphere. Small spheres are impostors now;
-    test_vpython_impostors.py measures what they cost."""
-    prog = tmp_path / "mem.py"
-    prog.write_text(MEMORY_PROGRAM)
-    grew = []
-    for n in (10000, 30000):
-        out = subprocess.run([sys.executable, str(prog), str(n)], capture_output=True,
-                             text=True, timeout=300, check=True)
-        grew.append(json.loads(out.stdout.strip().splitlines()[-1])["grew"])
-    per_sphere = (grew[1] - grew[0]) / 20000
-    assert per_sphere < 10_000, per_sphere

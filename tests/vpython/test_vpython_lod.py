@@ -17,6 +17,9 @@ import numpy as np
 import pytest
 
 import springscene.vpython as vp
+from springscene import jobs
+from springscene.app import cli
+from springscene.errors import UserError
 from springscene.view import camera
 from springscene.view.geometry import HelixTube
 from springscene.vpython import draw, helix_batch, placement
@@ -264,6 +267,20 @@ def _lattice(n: int) -> list:
     return springs
 
 
+def _lattice_picture(size, antialias: bool, detail):
+    """The 2 x 2 x 2 lattice drawn within ``detail`` (a context): its picture and its
+    helix batch's signature (the chords and sides drawn)."""
+    with detail:
+        vp.reset()
+        vp.scene.width, vp.scene.height = size
+        _lattice(2)
+        r = Renderer(vp.scene, antialias=antialias)
+        image = r.frame()
+        sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
+        r.close()
+    return image, sig
+
+
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 @pytest.mark.parametrize("size", [(450, 300), (300, 200)])
 def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, monkeypatch):
@@ -273,15 +290,8 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, mo
     outside it. Anti-aliased they are at full detail."""
 
     def picture(full: bool):
-        with draw.full_detail() if full else contextlib.nullcontext():
-            vp.reset()
-            vp.scene.width, vp.scene.height = size
-            _lattice(2)
-            r = Renderer(vp.scene, antialias=antialias)
-            image = r.frame()
-            sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
-            r.close()
-        return image, sig
+        return _lattice_picture(size, antialias,
+                                draw.full_detail() if full else contextlib.nullcontext())
 
     full, _ = picture(full=True)
     lod, sig = picture(full=False)
@@ -328,15 +338,8 @@ def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
     bound of full detail but outside the image tolerance; the detail restored after."""
 
     def picture(full: bool = False, px: float | None = None):
-        with draw.full_detail() if full else draw.coarser_detail(px):
-            vp.reset()
-            vp.scene.width, vp.scene.height = 450, 300
-            _lattice(2)
-            r = Renderer(vp.scene, antialias=antialias)
-            image = r.frame()
-            sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
-            r.close()
-        return image, sig
+        return _lattice_picture((450, 300), antialias,
+                                draw.full_detail() if full else draw.coarser_detail(px))
 
     full, _ = picture(full=True)
     coarse, sig = picture(px=0.3)
@@ -360,8 +363,6 @@ def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
     ("6", "--lod: 6: the level of detail must be more than 0 and at most 5 pixels"),
     ("x", "--lod: 'x' is not a number of pixels")])
 def test_lod_flag_refuses_what_is_not_a_detail(tmp_path, value, message):
-    from springscene.app import cli
-
     prog = tmp_path / "p.py"
     prog.write_text("from vpython import *\nhelix()\n")
     with pytest.raises(SystemExit) as exc, contextlib.redirect_stderr(io.StringIO()) as err:
@@ -376,9 +377,6 @@ def test_lod_flag_refuses_what_is_not_a_detail(tmp_path, value, message):
 def test_lod_option_of_the_library_is_checked_as_the_flag(tmp_path, value):
     """``jobs.vpython(..., lod=...)`` (the API's ``run_vpython``): the flag's rule, one
     line naming --lod, before anything runs."""
-    from springscene import jobs
-    from springscene.errors import UserError
-
     prog = tmp_path / "p.py"
     prog.write_text("from vpython import *\nhelix()\n")
     with pytest.raises(UserError, match="^--lod .*: the level of detail must be more than 0"):
