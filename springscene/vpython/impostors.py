@@ -15,10 +15,10 @@ Two things make it VPython's sphere:
   would draw with 16 slices or fewer (:data:`MAX_SLICES`), about 5.2 px of radius and
   less, at the radius whose circle has the area of VPython's 30-slice outline
   (:data:`EQUAL_AREA`). Against VPython's full mesh, % of pixels off by more than 24/255
-  on clouds of 1,000-3,000 spheres 1-5 px across, impostors / the cut-down meshes drawn
-  before: draft 0.041 / 0.05-0.50, 0.027 / 0.504, 0.004 / 0.246 (the project's image
-  tolerance is 0.05 %); anti-aliased 0.097, 0.136 / 0.937, 0.122 / 0.343 (the rest:
-  the highlight of a sphere one or two pixels across, at a pixel or the next). Between
+  on three clouds of 1,000-3,000 spheres 1-5 px across: drafted 0.041, 0.027 and 0.004
+  (the project's image tolerance is 0.05 %; the cut-down meshes drawn before: 0.03-0.50),
+  anti-aliased 0.097, 0.136 and 0.122 (meshes: 0.16-0.94; the rest is the highlight of
+  a sphere one or two pixels across, at a pixel or the next). Between
   5.2 and 11.7 px the exact circle strays from the 30-slice outline by 0.03-0.06 px and
   anti-aliased puts up to 0.15 % of pixels off (the lattice example: 0.055 %), so there
   the mesh is kept, cut down to 20 or 24 slices, and over 11.7 px VPython's 30.
@@ -27,7 +27,9 @@ Two things make it VPython's sphere:
   ray of each of the pixel's samples (``interpolateAtSample``, ARB_gpu_shader5) and writes
   the covered ones to ``gl_SampleMask`` (ARB_sample_shading), shading once per pixel as
   MSAA shades a mesh (a pixel whose centre misses takes the outline's normal). Shaded
-  per sample instead, small highlights came out averaged: 0.2-0.8 % of pixels off.
+  per sample instead (the first try), the highlights of small spheres came out averaged,
+  unlike a mesh's: 0.19-0.79 % of pixels off where the mask put 0.15-0.22 % (both
+  measured before the equal-area radius).
 
 Mesa's llvmpipe has both extensions (GL 4.5); a context without them keeps meshes
 (:func:`available`). Opaque, lit, non-emissive spheres of equal size along their three
@@ -43,7 +45,6 @@ import numpy as np
 from .batches import Batch
 from .instanced import InstancedBatch
 from .materials import shade_as_glowscript
-
 from .shapes import SPHERE_SLICES
 
 # VPython's sphere is a mesh of 30 slices with its vertices on the sphere: its outline is
@@ -203,5 +204,5 @@ class SphereBatch(InstancedBatch):
         self.impostors.remove()
 
 
-__all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres", "COVERAGE_RULES",
-           "EXTENSIONS"]
+__all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres",
+           "COVERAGE_RULES", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]
