@@ -10,6 +10,9 @@ colours rounded to 1/255, a ``vtkDataSetMapper`` with scalars off, point normals
 computed for smooth shading, a ``vtkCornerAnnotation`` scaled by half the font size);
 :func:`polydata`, :func:`box` and :func:`sphere` make the meshes ``pv.PolyData``,
 ``pv.Box`` and ``pv.Sphere`` made, bit for bit. The pictures are the ones pyvista drew.
+The VPython renderer draws here too: :func:`rgb_mesh_actor` (``add_mesh`` of a mesh
+coloured by its points' ``rgb``, a texture or none), :func:`image_texture`
+(``pv.Texture``) and :func:`scene_light` (``pv.Light``) make what pyvista made.
 
 The backend must have been chosen (:func:`springscene.view.backend.select`) before a
 window is made.
@@ -106,6 +109,13 @@ class Window:
         self.renderer.AddLight(light)
         return light
 
+    def set_background(self, color) -> None:
+        """The background, rounded to 1/255 (``pv.Plotter.set_background``)."""
+        self.renderer.SetBackground(*pyvista_color(color))
+
+    def remove_all_lights(self) -> None:
+        self.renderer.RemoveAllLights()
+
     def add_actor(self, actor, name: str | None = None, pickable: bool = True):
         """Add a prop (a 3D actor or a 2D text); ``name`` replaces an actor of that name."""
         name = name or f"{type(actor).__name__}({actor.__this__})"
@@ -168,6 +178,81 @@ def mesh_actor(mesh, smooth_shading: bool = False):
     prop.SetPointSize(5.0)           # pyvista's theme; nothing here draws points
     prop.SetEdgeColor(0.0, 0.0, 0.0)
     return actor
+
+
+def scene_light(position, color, positional: bool, focal_point=None, cone_angle=None,
+                intensity=None):
+    """A scene light as ``pv.Light(position=..., focal_point=..., color=...,
+    light_type="scene light")`` made it, then ``positional``, ``cone_angle`` and
+    ``intensity`` set: ambient, diffuse and specular colour rounded to 1/255, VTK's
+    defaults for the rest (attenuation, exponent)."""
+    from vtkmodules.vtkRenderingCore import vtkLight  # noqa: PLC0415  heavy: VTK
+
+    light = vtkLight()
+    light.SetPosition(*(float(v) for v in position))
+    if focal_point is not None:
+        light.SetFocalPoint(*(float(v) for v in focal_point))
+    rgb = pyvista_color(color)
+    light.SetAmbientColor(*rgb)
+    light.SetDiffuseColor(*rgb)
+    light.SetSpecularColor(*rgb)
+    light.SetLightTypeToSceneLight()
+    light.SetPositional(bool(positional))
+    if cone_angle is not None:
+        light.SetConeAngle(float(cone_angle))
+    if intensity is not None:
+        light.SetIntensity(float(intensity))
+    return light
+
+
+def rgb_mesh_actor(mesh, texture=None):
+    """An actor for a polydata coloured by its points' ``rgb`` array, as
+    ``pv.Plotter.add_mesh(mesh, scalars="rgb", rgb=True, smooth_shading=False,
+    show_scalar_bar=False, texture=texture)`` made it (the mesh not copied): point
+    scalars shown as they are (direct colour mode), interpolated before mapping, an
+    identity user matrix, and pyvista's property (flat, white under a texture, else
+    its default colour)."""
+    from vtkmodules.vtkCommonMath import vtkMatrix4x4  # noqa: PLC0415  heavy: VTK
+
+    actor = mesh_actor(mesh)
+    mesh.GetPointData().SetActiveScalars("rgb")
+    mapper = actor.GetMapper()
+    mapper.SetArrayName("rgb")
+    mapper.SetScalarModeToUsePointData()
+    mapper.SetColorModeToDirectScalars()
+    mapper.ScalarVisibilityOn()
+    actor.SetUserMatrix(vtkMatrix4x4())
+    if texture is not None:
+        actor.SetTexture(texture)
+    prop = actor.GetProperty()
+    prop.SetColor(*((1.0, 1.0, 1.0) if texture is not None else PYVISTA_MESH_COLOR))
+    prop.SetInterpolationToFlat()
+    prop.SetSpecularPower(100.0)
+    return actor
+
+
+PYVISTA_MESH_COLOR = pyvista_color((173 / 255, 216 / 255, 230 / 255))   # pyvista's "lightblue"
+
+
+def image_texture(image: np.ndarray):
+    """A ``vtkTexture`` of an (h, w[, c]) picture as ``pv.Texture(image)`` made it: an
+    image of w x h points, row 0 of the picture at the top (the last image row), the
+    point array ``Image`` of the picture's dtype."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkCommonDataModel import vtkImageData  # noqa: PLC0415  heavy: VTK
+    from vtkmodules.vtkRenderingCore import vtkTexture  # noqa: PLC0415  heavy: VTK
+
+    image = np.asarray(image)
+    components = 1 if image.ndim == 2 else image.shape[2]
+    grid = vtkImageData()
+    grid.SetDimensions(image.shape[1], image.shape[0], 1)
+    pixels = numpy_to_vtk(np.ascontiguousarray(image[::-1].reshape(-1, components)), deep=True)
+    pixels.SetName("Image")
+    grid.GetPointData().SetScalars(pixels)
+    texture = vtkTexture()
+    texture.SetInputDataObject(grid)
+    texture.Update()
+    return texture
 
 
 def _compute_point_normals(mesh) -> None:

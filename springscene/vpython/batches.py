@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from ..view.scene import SPECULAR
+from ..view.window import image_texture, rgb_mesh_actor
 from .materials import shade_as_glowscript, shade_emissive
 from .placement import vtk_cells
 from . import textures
@@ -69,9 +70,7 @@ class Batch:
             self.mesh.GetPointData().SetActiveScalars("rgb")
         else:
             self.mesh = mesh
-            self.actor = self.plotter.add_mesh(mesh, scalars="rgb", rgb=True,
-                                               smooth_shading=False, show_scalar_bar=False,
-                                               texture=self.texture)
+            self.actor = self.plotter.add_actor(rgb_mesh_actor(mesh, self.texture))
             self._style(style)
         self.signature = signature
 
@@ -101,7 +100,7 @@ class Batch:
         mapper.SetColorModeToDirectScalars()
         actor = vtkActor()
         actor.SetMapper(mapper)
-        self.plotter.renderer.AddActor(actor)
+        self.plotter.add_actor(actor)      # listed in renderer.actors, as add_mesh's are
         self.actor = actor
         self._style(style)
 
@@ -219,9 +218,7 @@ class TextureCache:
 def vtk_texture(image: np.ndarray):
     """A VTK texture of an RGB picture: row 0 at v = 1 (WebGL's ``UNPACK_FLIP_Y_WEBGL``),
     repeated (WebGL's default wrap), with mipmaps (GlowScript's ``generateMipmap``)."""
-    import pyvista as pv  # noqa: PLC0415  heavy: pyvista
-
-    texture = pv.Texture(np.ascontiguousarray(image))
+    texture = image_texture(np.ascontiguousarray(image))
     texture.SetInterpolate(True)
     texture.SetMipmap(True)
     texture.SetRepeat(True)

@@ -26,7 +26,7 @@ from typing import Iterator
 
 import numpy as np
 
-from ..view import backend, camera
+from ..view import backend, camera, window
 from ..view.scene import MULTI_SAMPLES, apply_view, grab
 from . import (autoscale, frames, label_draw, materials, placement, point_draw, polygons, shapes,
                textured, textures)
@@ -214,13 +214,11 @@ class Renderer:
 
     def __init__(self, cv, antialias: bool = True, backend_name: str = "auto") -> None:
         backend.select(backend_name)
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
-
         self.cv = cv
         self.width, self.height = int(cv.width), int(cv.height)
         self.antialias = antialias
-        pl = pv.Plotter(off_screen=True, window_size=(self.width, self.height), lighting="none")
-        pl.renderer.AutomaticLightCreationOff()     # scene.lights = [] means no light
+        # plain VTK (no pyvista.plotting, no matplotlib); no light until scene.lights
+        pl = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
         helix_batch.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
         self._transparency = materials.Transparency(pl, MULTI_SAMPLES if antialias else 0)
         self.plotter = pl
@@ -520,23 +518,15 @@ class Renderer:
                     for lt in lights)
         if sig == self._lights_sig:
             return
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
-
         self.plotter.remove_all_lights()
+        add = self.plotter.renderer.AddLight
         for kind, colour, where in sig:
             if kind == "distant_light":
-                light = pv.Light(position=where, focal_point=(0, 0, 0), color=colour,
-                                 light_type="scene light")
-                light.positional = False
+                add(window.scene_light(where, colour, False, focal_point=(0, 0, 0)))
             else:
-                light = pv.Light(position=where, color=colour, light_type="scene light")
-                light.positional = True
-                light.cone_angle = 180
-            self.plotter.add_light(light)
+                add(window.scene_light(where, colour, True, cone_angle=180))
         if not sig:        # VTK draws unlit with no light at all; VPython then shows ambient
-            dark = pv.Light(position=(0, 0, 1), color=(0, 0, 0), light_type="scene light")
-            dark.intensity = 0.0
-            self.plotter.add_light(dark)
+            add(window.scene_light((0, 0, 1), (0, 0, 0), False, intensity=0.0))
         self._lights_sig = sig
 
     def _place_camera(self) -> None:
