@@ -32,6 +32,8 @@ class Batch:
     """One actor and mesh holding every object of one kind and look."""
 
     empty = False        # nothing to draw (a cleared curve, a zero-length helix)
+    own_empty = False    # its own actor draws nothing now, its parts may
+    parts: tuple = ()    # batches drawn with it (a textured batch's bare part, impostors)
     opacity = 1.0        # the look's opacity
     vertex_alpha = False  # some vertex's own opacity (RGBA colours) is below 1
     lit = False          # a surface lit by the lights (shaded by GlowScript's rules)
@@ -131,22 +133,35 @@ class Batch:
             shade_as_glowscript(self.actor, self.translucent)
 
     def hide(self) -> None:
+        """Nothing drawn: its own actor and its parts."""
+        self.hide_own()
+        for part in self.parts:
+            part.hide()
+
+    def hide_own(self) -> None:
+        """Its own actor not drawn; its parts as they are."""
         self.empty = True
         if self.actor is not None:
             self.actor.SetVisibility(False)
 
     def show(self) -> None:
-        if self.actor is not None and not self.empty:
+        if self.actor is not None and not self.empty and not self.own_empty:
             self.actor.SetVisibility(True)
+        for part in self.parts:
+            part.show()
 
     def restyle(self, style: dict) -> None:
         if self.actor is not None:
             self._style(style)
+        for part in self.parts:
+            part.restyle(style)
 
     def remove(self) -> None:
         if self.actor is not None:
             self.plotter.remove_actor(self.actor)
             self.actor = None
+        for part in self.parts:
+            part.remove()
 
 
 class TexturedBatch(Batch):
@@ -156,6 +171,7 @@ class TexturedBatch(Batch):
     def __init__(self, plotter, key: tuple, texture) -> None:
         super().__init__(plotter, key, texture)
         self.bare = Batch(plotter, key)
+        self.parts = (self.bare,)
         spec = key[-1]                     # the batch's TextureSpec (draw.Renderer._key)
         bump = textures.bump_of(spec) if isinstance(spec, textures.TextureSpec) else None
         self.bump = None if bump is None else vtk_texture(bump)
@@ -177,29 +193,13 @@ class TexturedBatch(Batch):
             cells = vtk_cells(triangles[covered]) if new else None
             self.set(points, normals, colors, cells, signature, style, uv)
         else:
-            super().hide()
+            self.hide_own()
         if covered.all():
             self.bare.hide()
         else:
             new = signature != self.bare.signature or self.bare.actor is None
             cells = vtk_cells(triangles[~covered]) if new else None
             self.bare.set(points, normals, colors, cells, signature, style)
-
-    def hide(self) -> None:
-        super().hide()
-        self.bare.hide()
-
-    def show(self) -> None:
-        super().show()
-        self.bare.show()
-
-    def restyle(self, style: dict) -> None:
-        super().restyle(style)
-        self.bare.restyle(style)
-
-    def remove(self) -> None:
-        super().remove()
-        self.bare.remove()
 
 
 class TextureCache:

@@ -165,15 +165,20 @@ class SphereBatch(InstancedBatch):
     def __init__(self, plotter, key: tuple) -> None:
         super().__init__(plotter, key)
         self.impostors = SphereImpostors(plotter, key)
-        self.no_meshes = False
+        self.parts = (self.impostors,)
+
+    @property
+    def no_meshes(self) -> bool:
+        """Every sphere is an impostor now: the instances' actor draws nothing."""
+        return self.own_empty
 
     def set_spheres(self, template, template_key, pos, R, size, rgb, style,
                     small: np.ndarray) -> None:
         """As :meth:`set_instances`, the spheres where ``small`` drawn as impostors (``R``:
         the frames of the others only)."""
         big = ~small
-        self.no_meshes = not big.any()
-        if self.no_meshes:
+        self.own_empty = not big.any()
+        if self.own_empty:
             self.empty = False
             if self.actor is not None:
                 self.actor.SetVisibility(False)
@@ -185,23 +190,6 @@ class SphereBatch(InstancedBatch):
         else:
             self.impostors.hide()
         self.signature = ("spheres", template_key, int(small.sum()))
-
-    def show(self) -> None:
-        if not self.no_meshes:
-            super().show()
-        self.impostors.show()
-
-    def hide(self) -> None:
-        super().hide()
-        self.impostors.hide()
-
-    def restyle(self, style: dict) -> None:
-        super().restyle(style)
-        self.impostors.restyle(style)
-
-    def remove(self) -> None:
-        super().remove()
-        self.impostors.remove()
 
 
 __all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres",

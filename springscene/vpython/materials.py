@@ -117,8 +117,7 @@ class Transparency:
 
     def sync(self, batches) -> None:
         """Peel (or stop peeling) as the batches shown now need."""
-        peeling = any(_shows_translucent(b) or _shows_translucent(getattr(b, "bare", None))
-                      for b in batches)
+        peeling = any(_shows_translucent(p) for b in batches for p in (b, *b.parts))
         if peeling == self.peeling:
             return
         self.renderer.SetUseDepthPeeling(peeling)
@@ -127,9 +126,8 @@ class Transparency:
 
 
 def _shows_translucent(batch) -> bool:
-    """A batch (or a textured batch's bare part) drawn now, and transparent."""
-    return batch is not None and batch.translucent and not batch.empty \
-        and batch.actor is not None
+    """A batch (or a part of one) drawn now, and transparent."""
+    return batch.translucent and not batch.empty and batch.actor is not None
 
 
 __all__ = ["Transparency", "shade_as_glowscript", "shade_emissive", "glow_factor", "PEELS"]

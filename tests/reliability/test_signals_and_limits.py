@@ -91,7 +91,8 @@ def test_a_signal_at_any_moment_of_a_render_stops_it_cleanly(tmp_path, signum, d
     assert list(tmp_path.iterdir()) == []              # no x.mp4, no hidden .x.mp4.*
 
 
-SWALLOWED = """
+# a program that installs springscene's handlers and is sent SIGTERM inside a try
+SIGTERMED = """
 import os, signal, time
 from springscene.app import signals
 signals.install()
@@ -99,6 +100,9 @@ try:
     try:
         os.kill(os.getpid(), signal.SIGTERM)
         time.sleep(5)
+"""
+
+SWALLOWED = SIGTERMED + """\
     except BaseException:
         pass                  # swallowed, as C code calling Python may swallow it
     start = time.monotonic()
@@ -109,14 +113,7 @@ except signals.Interrupted as exc:
     print("raised again", exc.name)
 """
 
-CLEAN_UP = """
-import os, signal, time
-from springscene.app import signals
-signals.install()
-try:
-    try:
-        os.kill(os.getpid(), signal.SIGTERM)
-        time.sleep(5)
+CLEAN_UP = SIGTERMED + """\
     finally:
         os.kill(os.getpid(), signal.SIGINT)      # a second signal during the clean-up
         time.sleep(0.5)
