@@ -91,6 +91,16 @@ def test_a_signal_at_any_moment_of_a_render_stops_it_cleanly(tmp_path, signum, d
     assert list(tmp_path.iterdir()) == []              # no x.mp4, no hidden .x.mp4.*
 
 
+# the end of a program that must see its signal raised again while it keeps busy
+BUSY_THEN_REPORT = """\
+    start = time.monotonic()
+    while time.monotonic() - start < 5:
+        sum(range(1000))
+    print("lost")
+except signals.Interrupted as exc:
+    print("raised again", exc.name)
+"""
+
 # a program that installs springscene's handlers and is sent SIGTERM inside a try
 SIGTERMED = """
 import os, signal, time
@@ -105,13 +115,7 @@ try:
 SWALLOWED = SIGTERMED + """\
     except BaseException:
         pass                  # swallowed, as C code calling Python may swallow it
-    start = time.monotonic()
-    while time.monotonic() - start < 5:
-        sum(range(1000))
-    print("lost")
-except signals.Interrupted as exc:
-    print("raised again", exc.name)
-"""
+""" + BUSY_THEN_REPORT
 
 CLEAN_UP = SIGTERMED + """\
     finally:
@@ -141,13 +145,7 @@ try:
     thing = Thing()
     ref = weakref.ref(thing, callback)
     del thing
-    start = time.monotonic()
-    while time.monotonic() - start < 5:
-        sum(range(1000))
-    print("lost")
-except signals.Interrupted as exc:
-    print("raised again", exc.name)
-"""
+""" + BUSY_THEN_REPORT
 
 
 @pytest.mark.parametrize("code, expected", [
