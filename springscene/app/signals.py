@@ -1,7 +1,12 @@
 """Stop signals: SIGINT, SIGTERM and SIGHUP stop every command alike, from the first instant.
 
-:func:`main` is the console command's entry. It installs the handlers before anything
-else is imported (numpy, VTK), then runs :func:`springscene.app.cli.main`. A signal
+:func:`main` is the Python entry of the ``springscene`` command. It installs the handlers
+before anything else is imported (numpy, VTK), then runs :func:`springscene.app.cli.main`.
+The command itself is a POSIX sh launcher (``app/springscene``, installed beside the
+entry) that starts the interpreter with the three signals blocked, so one sent during the
+interpreter's own start-up (where Python would print a ``KeyboardInterrupt`` traceback)
+waits: :func:`main` unblocks them once the handlers are in, and a held signal is handled
+then, like any other. A signal
 raises :class:`Interrupted` (a ``KeyboardInterrupt`` carrying the signal) in the main
 thread, so the ``with``/``finally`` blocks on the way out (``outputs.atomic_path``, a
 figure set's staging folder, an encoder being closed) remove what they wrote; the command
@@ -195,10 +200,17 @@ def _leave(status: int) -> None:
     os._exit(status)
 
 
+def _let_in() -> None:
+    """Unblock the stop signals (the launcher held them through the interpreter's start-up):
+    one that came meanwhile is delivered now, to the handlers :func:`install` put in."""
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, SIGNALS)
+
+
 def main(argv: list[str] | None = None) -> int:
     """The ``springscene`` command: the handlers first, then the command line."""
     install()
     try:
+        _let_in()
         # imported here, after the handlers: a signal while numpy and the command line load
         # is an Interrupted like any other
         cli = importlib.import_module("springscene.app.cli")
