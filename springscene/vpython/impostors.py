@@ -53,6 +53,11 @@ from .shapes import SPHERE_SLICES
 # anti-aliased: coverage 201.0 px for the mesh, 202.5 for the true radius, 201.0 for this)
 EQUAL_AREA = math.sqrt(SPHERE_SLICES / (2 * math.pi) * math.sin(2 * math.pi / SPHERE_SLICES))
 MAX_SLICES = 16        # spheres drawn with this many slices or fewer become impostors
+# spheres an impostor actor draws: llvmpipe keeps every triangle of a frame binned (about
+# 300 bytes each) until it rasterises them; a chunk after the first finishes the drawing
+# before it (``WaitForCompletion``), so a frame of 100,000 impostors holds 8,192 of them,
+# not 30 MB (the same pixels: opaque spheres, the same order, the depth test decides)
+CHUNK = 8192
 EXTENSIONS = ("GL_ARB_gpu_shader5", "GL_ARB_sample_shading")
 _DECLARE = ("//VTK::System::Dec",
             "//VTK::System::Dec\n" + "".join(f"#extension {e} : require\n" for e in EXTENSIONS))
@@ -113,12 +118,29 @@ def round_spheres(size: np.ndarray) -> np.ndarray:
 
 class SphereImpostors(Batch):
     """Spheres of one look drawn by ``vtkOpenGLSphereMapper``: a point, a radius and a
-    colour each."""
+    colour each, :data:`CHUNK` spheres an actor (the first chunk this batch's own, the
+    others its :attr:`parts`)."""
+
+    def __init__(self, plotter, key: tuple, flush: bool = False) -> None:
+        super().__init__(plotter, key)
+        self.flush = flush              # finish the drawing so far before this chunk's
+        self.chunks: list[SphereImpostors] = []
 
     def set_spheres(self, pos: np.ndarray, radius: np.ndarray, rgb: np.ndarray,
                     style: dict) -> None:
         """The spheres now: centres ``pos`` (M, 3), ``radius`` (M,), ``rgb`` (M, 3) uint8
-        (drawn at the radius of :data:`EQUAL_AREA`)."""
+        (drawn at the radius of :data:`EQUAL_AREA`), in chunks of :data:`CHUNK`."""
+        starts = range(CHUNK, len(pos), CHUNK)
+        while len(self.chunks) < len(starts):
+            self.chunks.append(SphereImpostors(self.plotter, self.key, flush=True))
+        self._set_chunk(pos[:CHUNK], radius[:CHUNK], rgb[:CHUNK], style)
+        for chunk, s in zip(self.chunks, starts):
+            chunk._set_chunk(pos[s:s + CHUNK], radius[s:s + CHUNK], rgb[s:s + CHUNK], style)
+        for chunk in self.chunks[len(starts):]:
+            chunk.hide()
+        self.parts = tuple(self.chunks)
+
+    def _set_chunk(self, pos, radius, rgb, style: dict) -> None:
         self.empty = False
         pos = np.asarray(pos, dtype=float).reshape(-1, 3)
         radius = (np.asarray(radius) * EQUAL_AREA).astype(np.float32)  # read as float
@@ -148,6 +170,9 @@ class SphereImpostors(Batch):
         m = vtkOpenGLSphereMapper()
         m.SetInputData(self.mesh)
         m.SetScaleArray("radius")
+        if self.flush:                  # the chunks before drawn (rasterised) first
+            window = self.plotter.ren_win
+            m.AddObserver("StartEvent", lambda *_: window.WaitForCompletion())
         self._adopt(m, style)
 
     def _shade(self) -> None:
@@ -193,4 +218,4 @@ class SphereBatch(InstancedBatch):
 
 
 __all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres",
-           "COVERAGE_RULES", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]
+           "COVERAGE_RULES", "CHUNK", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]

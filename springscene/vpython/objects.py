@@ -21,7 +21,7 @@ from . import runtime
 from .base import _Base
 from .checks import _vec
 from .curves import curve, points
-from .shared_defaults import Default, default, seed_keys, stored
+from .shared_defaults import Default, compact, default, seed_keys, stored
 from .vector import is_lenient, vector
 
 
@@ -86,6 +86,7 @@ class standard(_Base):
 
     _default_size = (1.0, 1.0, 1.0)
     _axis_sets_size = True          # sphere and ring keep their size when axis changes
+    _compact = False                # vectors shared with equal ones once made (:func:`compact`)
 
     # the defaults (vpython.py ``standardAttributes``), stored on an object once set
     _trail_color = None
@@ -125,6 +126,8 @@ class standard(_Base):
             self._setup(args)
         finally:
             _BUILDING.discard(id(self))
+        if self._compact:
+            compact(self)
         if self._make_trail:
             self._add_trail_point()
 

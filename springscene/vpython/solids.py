@@ -14,14 +14,18 @@ from .vector import vector
 
 class box(standard):
     _kind = "box"
+    _compact = True
 
 
 class pyramid(standard):
     _kind = "pyramid"
+    _compact = True
 
 
 class _Round(standard):
     """Objects whose ``radius`` is half of size.y (and size.z)."""
+
+    _compact = True
 
     @property
     def radius(self) -> float:
@@ -68,6 +72,7 @@ class arrow(standard):
     """``shaftwidth``, ``headwidth``, ``headlength``: 0 means VPython's automatic value."""
 
     _kind = "arrow"
+    _compact = True
     _default_size = (1.0, 0.2, 0.2)
     _shaftwidth = _headwidth = _headlength = 0.0
     _round = False
@@ -114,6 +119,7 @@ class ring(standard):
     tube's centre, ``thickness`` the tube's radius (VPython's size = (2t, 2(R+t), 2(R+t)))."""
 
     _kind = "ring"
+    _compact = True
     _default_size = (0.2, 2.2, 2.2)
     _axis_sets_size = False
 
