@@ -201,9 +201,25 @@ def _leave(status: int) -> None:
 
 
 def _let_in() -> None:
-    """Unblock the stop signals (the launcher held them through the interpreter's start-up):
-    one that came meanwhile is delivered now, to the handlers :func:`install` put in."""
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, SIGNALS)
+    """Unblock the stop signals the launcher (``app/springscene``) held through the
+    interpreter's start-up: one that came meanwhile is delivered now, to the handlers
+    :func:`install` put in. ``SPRINGSCENE_SIGBLK`` is the mask the launcher was started with
+    (``SigBlk`` of /proc): a signal the caller had blocked itself stays blocked. Run so, the
+    process is named ``springscene`` again (``pgrep -x``, ``killall``), not ``_springscene``."""
+    before = os.environ.pop("SPRINGSCENE_SIGBLK", None)     # (not passed to children)
+    if before is None:
+        return                                              # not started by the launcher
+    try:
+        callers = int(before, 16)
+    except ValueError:
+        callers = 0
+    signal.pthread_sigmask(signal.SIG_UNBLOCK,
+                           [s for s in SIGNALS if not callers & (1 << (s - 1))])
+    try:
+        with open("/proc/self/comm", "w") as comm:
+            comm.write("springscene")
+    except OSError:
+        pass
 
 
 def main(argv: list[str] | None = None) -> int:

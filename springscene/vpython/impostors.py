@@ -39,6 +39,7 @@ axes only (an ellipsoid, a transparent or glowing sphere keeps its mesh).
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -116,6 +117,19 @@ def round_spheres(size: np.ndarray) -> np.ndarray:
     return (size[:, 0] == size[:, 1]) & (size[:, 1] == size[:, 2])
 
 
+def _finisher(window):
+    """An observer that finishes ``window``'s drawing so far; it holds the window weakly (a
+    strong hold would make a cycle through VTK, window to mapper to observer, that Python's
+    collector cannot see: a renderer dropped unclosed would never be freed)."""
+    ref = weakref.ref(window)
+
+    def finish(*_) -> None:
+        w = ref()
+        if w is not None:
+            w.WaitForCompletion()
+    return finish
+
+
 class SphereImpostors(Batch):
     """Spheres of one look drawn by ``vtkOpenGLSphereMapper``: a point, a radius and a
     colour each, :data:`CHUNK` spheres an actor (the first chunk this batch's own, the
@@ -171,8 +185,7 @@ class SphereImpostors(Batch):
         m.SetInputData(self.mesh)
         m.SetScaleArray("radius")
         if self.flush:                  # the chunks before drawn (rasterised) first
-            window = self.plotter.ren_win
-            m.AddObserver("StartEvent", lambda *_: window.WaitForCompletion())
+            m.AddObserver("StartEvent", _finisher(self.plotter.ren_win))
         self._adopt(m, style)
 
     def _shade(self) -> None:

@@ -43,8 +43,8 @@ def _start(*args, env=None) -> subprocess.Popen:
                             preexec_fn=_default_signals)
 
 
-def _still(tmp_path: Path) -> subprocess.Popen:
-    return _start("still", WIKI, "--draft", "--out", tmp_path / "x.png")
+def _still(tmp_path: Path, env=None) -> subprocess.Popen:
+    return _start("still", WIKI, "--draft", "--out", tmp_path / "x.png", env=env)
 
 
 def _mask(pid: int, field: str) -> int | None:
@@ -131,6 +131,12 @@ def test_an_env_without_block_signal_still_starts_the_command(tmp_path):
     out, err = proc.communicate(timeout=120)
     assert (proc.returncode, err) == (0, "")
     assert out.startswith("springscene ")
+    out = tmp_path / "out"
+    out.mkdir()
+    proc = _still(out, env=env)                      # signals work as they did before
+    _wait_for_handlers(proc)
+    proc.send_signal(signal.SIGTERM)
+    assert _outcome(proc, out) == (143, ["springscene: interrupted (SIGTERM)"], [])
 
 
 @pytest.mark.skipif(not COMMAND.exists(), reason="springscene is not installed here")
@@ -153,3 +159,51 @@ def test_a_launcher_without_its_entry_says_so_in_one_line(tmp_path):
     assert proc.stderr.splitlines() == [
         f"springscene: error: {tmp_path}/_springscene is missing: reinstall springscene "
         "(pip install springscene)"]
+
+
+def _wait_for_handlers(proc: subprocess.Popen) -> None:
+    deadline = time.monotonic() + 60
+    while (_mask(proc.pid, "SigCgt") or 0) & (1 << (signal.SIGTERM - 1)) == 0:
+        assert proc.poll() is None and time.monotonic() < deadline, proc.communicate()
+        time.sleep(0.002)
+
+
+@pytest.mark.skipif(not COMMAND.exists(), reason="springscene is not installed here")
+def test_the_running_command_is_named_springscene_and_keeps_the_callers_blocked_signals(
+        tmp_path):
+    """``pgrep -x springscene`` finds it (not the entry's ``_springscene``); a signal the
+    caller blocked itself stays blocked (the launcher unblocks only what it blocked): a
+    SIGHUP sent meanwhile changes nothing, the run ends with its still."""
+    def hup_blocked() -> None:
+        _default_signals()
+        signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGHUP])
+
+    proc = subprocess.Popen([str(COMMAND), "render", WIKI, "--draft", "--duration", "1",
+                             "--out", tmp_path / "x.gif"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, preexec_fn=hup_blocked)
+    _wait_for_handlers(proc)
+    assert Path(f"/proc/{proc.pid}/comm").read_text() == "springscene\n"
+    blocked = _mask(proc.pid, "SigBlk")
+    assert blocked & MASK == 1 << (signal.SIGHUP - 1)
+    proc.send_signal(signal.SIGHUP)
+    status, err, left = _outcome(proc, tmp_path)
+    assert (status, err, left) == (0, [], ["x.gif"])
+
+
+@pytest.mark.skipif(not COMMAND.exists(), reason="springscene is not installed here")
+@pytest.mark.parametrize("how", ["folder with =", "empty PATH entry"])
+def test_the_command_runs_from_any_folder_name_and_lookup(tmp_path, how):
+    """A folder name with ``=`` (``env`` would read the entry as a setting, and run the
+    first argument instead); a bare name found through an empty PATH entry (``$0`` with no
+    slash)."""
+    if how == "folder with =":
+        folder = tmp_path / "v=1"
+        folder.symlink_to(BIN, target_is_directory=True)
+        args, cwd, env = [str(folder / "springscene"), "--version"], tmp_path, None
+    else:
+        args = ["sh", "-c", "springscene --version"]
+        cwd, env = BIN, {**os.environ, "PATH": ":/usr/bin:/bin"}
+    proc = subprocess.run(args, cwd=cwd, env=env, capture_output=True, text=True,
+                          timeout=120)
+    assert (proc.returncode, proc.stderr) == (0, "")
+    assert proc.stdout.startswith("springscene ")

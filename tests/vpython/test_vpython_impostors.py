@@ -258,3 +258,22 @@ def test_memory_of_many_small_spheres(tmp_path, antialias, impostors, bound):
         grew.append(json.loads(out.stdout.strip().splitlines()[-1])["grew"])
     per_sphere = (grew[1] - grew[0]) / 20000
     assert per_sphere < bound, per_sphere
+
+
+def test_a_renderer_of_chunked_impostors_dropped_unclosed_is_freed(monkeypatch):
+    """The observer that finishes each chunk's drawing holds the window weakly: a strong
+    hold made a cycle through VTK (window, mapper, observer) Python's collector cannot see,
+    and a renderer dropped without ``close()`` kept its window and buffers for good."""
+    import gc
+    import weakref
+
+    monkeypatch.setattr(impostors, "CHUNK", 40)
+    _cloud(100, 0.15)                                  # three chunks: two finishers
+    r = Renderer(vp.scene, antialias=False)
+    r.frame()
+    (batch,) = [b for k, b in r._batches.items() if k[0] == "sphere"]
+    assert len(batch.impostors.chunks) == 2
+    window = weakref.ref(r.plotter.ren_win)
+    del r, batch
+    gc.collect()
+    assert window() is None
