@@ -21,6 +21,7 @@ Examples
 
 from __future__ import annotations
 
+import os
 import sys
 from collections.abc import Mapping
 from dataclasses import replace as _replace
@@ -31,7 +32,8 @@ from typing import Any
 import numpy as np
 
 from . import _callable, config, jobs
-from .errors import UserError
+from .errors import OutputError, UserError
+from .video import WRITE_ERRNOS, reason_of
 from .results import Analysis, Still, Table, Video, table
 from .science.sweep import SweepResult, parse_omega
 from .settings import Config
@@ -140,14 +142,28 @@ def init(name: str = "wiki.toml", folder: str | Path = ".") -> Path:
         raise UserError(f"init: {folder}: no such folder")
     target = folder / entry.name
     try:
-        with open(target, "xb") as fh:
-            fh.write(entry.read_bytes())
+        _write_new(target, entry.read_bytes())
     except FileExistsError:
         raise UserError(f"{target}: already exists; init never overwrites (remove it or "
                         "run init in another folder)") from None
     except OSError as exc:
+        if exc.errno in WRITE_ERRNOS:             # no space, read-only: exit 1, as any write
+            raise OutputError(reason_of(exc), target, exc.errno) from None
         raise UserError(f"{target}: cannot write ({exc.strerror})") from None
     return target
+
+
+def _write_new(target: Path, data: bytes) -> None:
+    """``data`` as a new file (never over one), on the disk; removed again if the write
+    fails or is interrupted, so a full disk leaves no empty file."""
+    with open(target, "xb") as fh:
+        try:
+            fh.write(data)
+            fh.flush()
+            os.fsync(fh.fileno())
+        except BaseException:
+            target.unlink(missing_ok=True)
+            raise
 
 
 def load_config(source: str | Path | Mapping[str, Any] | Config) -> Config:

@@ -42,14 +42,21 @@ def check_output(path: str | Path, formats: tuple[str, ...], flag: str = "--out"
     parent = path.parent if str(path.parent) else Path(".")
     if not parent.is_dir():
         raise UserError(f"{flag} {path}: folder {parent} does not exist")
-    if not os.access(parent, os.W_OK | os.X_OK):
-        if _read_only(parent):        # a write that cannot succeed: exit 1, as a full disk
-            raise OutputError(reason_of(OSError(errno.EROFS, os.strerror(errno.EROFS))), path,
-                              errno.EROFS)
-        raise UserError(f"{flag} {path}: folder {parent} is not writable")
+    check_writable_folder(parent, path, flag)
     if path.is_dir():
         raise UserError(f"{flag} {path}: is a directory")
     return path
+
+
+def check_writable_folder(folder: Path, path: Path, flag: str = "--out") -> None:
+    """That files can be made in ``folder`` (for ``path``): a read-only file system is a
+    write that cannot succeed (an :class:`OutputError`, exit 1, as a full disk); a folder
+    the user may not write to is bad input (a :class:`UserError`, exit 2)."""
+    if not os.access(folder, os.W_OK | os.X_OK):
+        if _read_only(folder):
+            raise OutputError(reason_of(OSError(errno.EROFS, os.strerror(errno.EROFS))), path,
+                              errno.EROFS)
+        raise UserError(f"{flag} {path}: folder {folder} is not writable")
 
 
 def _read_only(folder: Path) -> bool:
@@ -124,10 +131,14 @@ def _flush(tmp: Path) -> None:
 
 
 def write_png(path: Path, image: np.ndarray) -> None:
+    """``image`` as a PNG at ``path`` (atomically). Encoded in memory, then written by a plain
+    file: a write that fails (no space) fails once, here, with no encoder left holding the
+    file to fail again when it is collected (imageio's ``PluginV3.__del__`` would print it)."""
     import imageio.v3 as iio  # noqa: PLC0415  heavy: imageio
 
-    with atomic_path(path) as tmp:
-        iio.imwrite(tmp, image, extension=".png")
+    data = iio.imwrite("<bytes>", image, extension=".png")
+    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
+        fh.write(data)
 
 
 class VideoWriter:

@@ -9,6 +9,7 @@ terminal (a pipe, CI, a notebook's captured output), show nothing.
 from __future__ import annotations
 
 import contextlib
+import shutil
 import sys
 from typing import Callable, Iterator
 
@@ -24,6 +25,9 @@ def steps(total: int, what: str) -> Iterator[Callable[[int], None] | None]:
         return
     from tqdm.auto import tqdm  # noqa: PLC0415  heavy: tqdm
 
+    # the terminal's size; 80 x 24 where it says 0 x 0 (a pty no one sized, as a harness
+    # or a container makes: tqdm would hide its bar below a screen of no rows)
+    size = shutil.get_terminal_size((80, 24))
     with tqdm(total=total, desc=what, unit=" steps", unit_scale=True, leave=False,
-              file=sys.stderr) as bar:
+              file=sys.stderr, ncols=size.columns, nrows=size.lines) as bar:
         yield bar.update

@@ -7,6 +7,7 @@ Everything a command does is a call into the ``springscene`` library.
 from __future__ import annotations
 
 import argparse
+import errno
 import os
 import sys
 import warnings
@@ -195,9 +196,22 @@ def _check_out_is_not_input(args: argparse.Namespace) -> None:
         same = dst.exists() and src.exists() and os.path.samefile(src, dst)
     except OSError:
         same = False
-    if same or src.resolve() == dst.resolve():
+    if same or _resolved(src, "") == _resolved(dst, "--out "):
         raise UserError(f"--out {out}: is the input {source} itself; writing there would "
                         "overwrite it (choose another name)")
+
+
+def _resolved(path: Path, flag: str) -> Path:
+    """``path`` with its symbolic links followed; a loop of them is bad input, named."""
+    try:
+        os.stat(path)
+        return path.resolve()
+    except FileNotFoundError:
+        return path.resolve()                         # (an output not written yet)
+    except (RuntimeError, OSError) as exc:            # RuntimeError: resolve() before 3.13
+        if isinstance(exc, OSError) and exc.errno != errno.ELOOP:
+            return path.absolute()                    # (unreadable: said where it is read)
+        raise UserError(f"{flag}{path}: cannot follow its symbolic links (a loop)") from None
 
 
 def _run(args: argparse.Namespace) -> int:

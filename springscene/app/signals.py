@@ -222,6 +222,16 @@ def _let_in() -> None:
         pass
 
 
+def _too_late() -> None:
+    """The command is done: a signal from now on changes nothing. Ignored, not only left to
+    the handler, so the interpreter's teardown (which puts back the default actions of the
+    handlers it knows) cannot end a finished run by the signal, its output whole."""
+    _state.done = True
+    for signum in SIGNALS:
+        if signal.getsignal(signum) is _handler:
+            signal.signal(signum, signal.SIG_IGN)
+
+
 def main(argv: list[str] | None = None) -> int:
     """The ``springscene`` command: the handlers first, then the command line."""
     install()
@@ -231,10 +241,11 @@ def main(argv: list[str] | None = None) -> int:
         # is an Interrupted like any other
         cli = importlib.import_module("springscene.app.cli")
         status = cli.main(argv)
-        _state.done = True          # a signal from now on comes too late to change anything
+        _too_late()
     except BaseException as exc:
         stop = interruption(exc)
         if stop is None:
+            _too_late()             # argparse's exit (--version, a bad flag), a bug: done
             raise
         status = report(stop)
     if received() is not None:

@@ -16,7 +16,8 @@ from typing import Iterator
 import numpy as np
 
 from ..errors import OutputError, UserError
-from ..outputs import atomic_path
+from ..outputs import atomic_path, check_writable_folder
+from ..video import WRITE_ERRNOS, reason_of
 from ..view.plotstyle import DPI, PNG_METADATA, SVG_METADATA, figure_image, style
 
 PNG_COLORS = 128
@@ -46,9 +47,10 @@ def prepare_out_dir(out: str | Path) -> Path:
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
+        if exc.errno in WRITE_ERRNOS:       # a read-only file system, a full disk: exit 1
+            raise OutputError(reason_of(exc), out, exc.errno) from None
         raise UserError(f"--out {out}: cannot create the folder ({exc.strerror})") from None
-    if not os.access(out, os.W_OK | os.X_OK):
-        raise UserError(f"--out {out}: folder is not writable")
+    check_writable_folder(out, out)
     return out
 
 

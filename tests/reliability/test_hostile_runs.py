@@ -26,7 +26,7 @@ except ModuleNotFoundError:                     # Python 3.10
 from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
-from conftest import ROOT, WIKI
+from conftest import ROOT, WIKI, small_disk
 from springscene.app import cli
 
 CHAIN = ROOT / "configs" / "chain.toml"
@@ -159,12 +159,52 @@ def test_every_command_on_a_full_disk_is_one_line_exit_1_and_leaves_nothing(
     assert list(tiny_disk.iterdir()) == []               # no file, no folder, no temporary
 
 
+@pytest.fixture
+def full_to_the_brim(tmp_path):
+    """A 64 kB tmpfs filled to its last byte: even a small PNG's first block fails."""
+    for disk in small_disk(tmp_path, "64k"):
+        fd = os.open(disk / "filler", os.O_WRONLY | os.O_CREAT)
+        try:
+            while os.write(fd, b"\0" * 512):
+                pass
+        except OSError:
+            pass
+        finally:
+            os.close(fd)
+        yield disk
+
+
+@pytest.mark.parametrize("command", ["still", "figures", "vpython-png", "init"])
+def test_a_disk_with_no_byte_free_is_one_line_exit_1_and_leaves_nothing(
+        command, full_to_the_brim, tmp_path):
+    """The encoder's own file handle failing again when collected (imageio's
+    ``PluginV3.__del__``: nine lines more) and ``init``'s empty file (exit 2) are gone."""
+    disk = full_to_the_brim
+    program = tmp_path / "prog.py"
+    program.write_text(PROGRAM)
+    args, cwd, name = {
+        "still": (["still", WIKI, "--draft", "--out", disk / "s.png"], ROOT, disk / "s.png"),
+        "figures": (["figures", WIKI, "--draft", "--out", disk / "figs"], ROOT,
+                    disk / "figs" / "scene.png"),
+        "vpython-png": (["vpython", program, "--draft", "--out", disk / "p.png"], ROOT,
+                        disk / "p.png"),
+        "init": (["init", "wiki.toml"], disk, "wiki.toml"),
+    }[command]
+    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=cwd,
+                          capture_output=True, text=True, timeout=300,
+                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    lines = [line for line in proc.stderr.splitlines() if INFO_LINE not in line]
+    assert (proc.returncode, lines) == (1, [f"springscene: no space left on device writing "
+                                            f"{name}"]), proc.stderr
+    assert [p.name for p in disk.iterdir()] == ["filler"]
+
+
 # ---- stop signals at random moments ---------------------------------------------------
 
 SIGNALS = {"SIGINT": 130, "SIGTERM": 143, "SIGHUP": 129}
-# hundredths of a second; from 0.1 s: in the interpreter's own first ~25 ms no code of
-# springscene's runs yet, and a signal ends Python its default way (SIGTERM and SIGHUP:
-# killed, 143 and 129 to a shell, nothing written; SIGINT: Python's KeyboardInterrupt)
+# hundredths of a second; from 0.1 s: run as ``python -m app``, in the interpreter's own
+# first ~25 ms no code of springscene's runs yet, and a signal ends Python its default way
+# (the installed command holds them through that start-up: tests/reliability/test_launcher.py)
 MOMENTS = random.Random(16).sample(range(10, 250), 9)
 
 
@@ -235,3 +275,36 @@ def test_a_huge_name_in_a_message_is_cut_to_keep_the_line_readable(tmp_path, cap
     err = capsys.readouterr().err
     assert len(err.splitlines()) == 1 and len(err) < cli.MAX_LINE + 200
     assert "characters left out" in err
+
+
+@pytest.mark.parametrize("looped", ["config", "out", "program"])
+def test_a_loop_of_symbolic_links_is_one_line_exit_2(tmp_path, capsys, looped):
+    """``ln -s b a; ln -s a b``: named, never ``RuntimeError: Symlink loop`` (a traceback)."""
+    (tmp_path / "a").symlink_to(tmp_path / "b")
+    (tmp_path / "b").symlink_to(tmp_path / "a")
+    program = tmp_path / "p.py"
+    program.write_text(PROGRAM)
+    loop, out = str(tmp_path / "a"), str(tmp_path / "o.png")
+    args = {"config": ["still", loop, "--out", out],
+            "out": ["still", str(WIKI), "--out", loop],
+            "program": ["vpython", loop, "--out", out]}[looped]
+    assert cli.main(args) == 2
+    flag = "--out " if looped == "out" else ""
+    assert capsys.readouterr().err.splitlines() == [
+        f"springscene: error: {flag}{loop}: cannot follow its symbolic links (a loop)"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a", "b", "p.py"]
+
+
+@pytest.mark.parametrize("where", ["new folder", "the folder itself"])
+def test_figures_on_a_read_only_file_system_is_a_failed_write_exit_1(tmp_path, where):
+    """As the README says of every write on a read-only folder (it was exit 2, bad input)."""
+    for disk in small_disk(tmp_path, "64k"):
+        remount = subprocess.run(["mount", "-o", "remount,ro", str(disk)], capture_output=True)
+        if remount.returncode != 0:
+            pytest.skip("cannot remount the tmpfs read-only here")
+        out = disk / "figs" if where == "new folder" else disk
+        proc = subprocess.run([sys.executable, "-m", "app", "figures", str(WIKI), "--draft",
+                               "--out", str(out)], cwd=ROOT, capture_output=True, text=True,
+                              timeout=300)
+        assert (proc.returncode, proc.stderr.splitlines()) == (
+            1, [f"springscene: read-only file system writing {out}"])

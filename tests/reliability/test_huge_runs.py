@@ -95,3 +95,35 @@ def test_frames_that_repeat_are_noted(tmp_path):
     proc = run_cli("vpython", prog, "--draft", "--no-page", "--fps", "20",
                    "--out", tmp_path / "t.mp4")
     assert proc.returncode == 0 and "frames repeat" not in proc.stderr
+
+
+def test_a_long_still_on_an_unsized_terminal_shows_its_bar(tmp_path):
+    """A real pseudo-terminal no one gave a size (0 x 0, as a harness or a container makes
+    one): tqdm would hide its bar below a screen of no rows; it is drawn 80 x 24."""
+    import os
+    import pty
+    import select
+    import signal
+    import subprocess
+    import sys
+    import time
+    from pathlib import Path
+
+    primary, secondary = pty.openpty()
+    proc = subprocess.Popen([sys.executable, "-m", "app", "still", str(WIKI), "--dt", "1e-6",
+                             "--time", "9.9", "--out", str(tmp_path / "s.png")],
+                            cwd=Path(__file__).resolve().parents[2], stdin=secondary,
+                            stdout=secondary, stderr=secondary)
+    os.close(secondary)
+    shown, start = b"", time.monotonic()
+    try:
+        while b"steps/s" not in shown and time.monotonic() - start < 60:
+            if select.select([primary], [], [], 0.5)[0]:
+                shown += os.read(primary, 4096)
+    finally:
+        proc.send_signal(signal.SIGINT)
+        proc.wait(timeout=60)
+        os.close(primary)
+    text = shown.decode(errors="replace")
+    assert "stepping:" in text and "/9.90M [" in text and "steps/s" in text, text[-400:]
+    assert list(tmp_path.iterdir()) == []
