@@ -36,10 +36,13 @@ MAX_LINE = 1000            # characters of a message line (a long quoted name is
 
 
 class _Parser(argparse.ArgumentParser):
-    """argparse that reports a usage error on one line."""
+    """argparse that reports a usage error on one line, starting ``springscene:`` as every
+    message does (a command's own: ``springscene: error: render: argument --fps: ...``)."""
 
     def error(self, message: str) -> None:  # type: ignore[override]
-        self.exit(EXIT_BAD_INPUT, f"{self.prog}: error: {message}\n")
+        command = self.prog.split(" ", 1)[1:]           # "springscene render": the command
+        where = f"{command[0]}: " if command else ""
+        self.exit(EXIT_BAD_INPUT, f"springscene: error: {where}{message}\n")
 
 
 def _build_parser() -> argparse.ArgumentParser:
