@@ -114,8 +114,12 @@ def current() -> Timeline | None:
 
 def _span(value, what: str) -> Fraction:
     try:
+        if isinstance(value, (str, bytes)):       # (Fraction would read "0.5"; time.sleep not)
+            raise TypeError
         span = Fraction(value)
-    except (TypeError, ValueError):
+    except (OverflowError, ValueError):           # a number, but nan or inf
+        raise ValueError(f"{what} must be finite, got {value}") from None
+    except TypeError:
         raise TypeError(f"{what} must be a number, not {type(value).__name__}") from None
     return span.limit_denominator(MAX_DENOMINATOR) if span.denominator > MAX_DENOMINATOR \
         else span

@@ -149,6 +149,21 @@ def test_rate_below_one_is_vpythons_error():
         runtime.rate(0.5)
 
 
+@pytest.mark.parametrize("value, error, message", [
+    (float("nan"), ValueError, "sleep time must be finite, got nan"),
+    (float("inf"), ValueError, "sleep time must be finite, got inf"),
+    ("0.5", TypeError, "sleep time must be a number, not str"),
+])
+def test_a_sleep_of_no_length_says_what_it_was_given(value, error, message):
+    """``sleep(nan)`` said "must be a number, not float"."""
+    runtime.start(runtime.Timeline(fps=10, max_frames=None, take=lambda: None))
+    try:
+        with pytest.raises(error, match=f"^{message}$"):
+            runtime.sleep(value)
+    finally:
+        runtime.start(None)
+
+
 def test_program_without_rate_is_one_frame_and_png_is_the_end(tmp_path):
     prog = write(tmp_path, """
         from vpython import *
