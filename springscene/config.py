@@ -17,7 +17,7 @@ from typing import Any, Callable
 
 import numpy as np
 
-from . import build
+from . import build, ranges
 from .colors import parse_color
 from .errors import UserError
 from .model import integrators, physics
@@ -94,6 +94,41 @@ def _nonzero_vec(v: Any) -> Vec:
     return (x, y, z)
 
 
+def _direction(v: Any) -> Vec:
+    """A direction: any finite non-zero vector, scaled by a power of two (exactly, so the
+    direction is unchanged) when its length would overflow or underflow."""
+    x, y, z = _nonzero_vec(v)
+    exponent = math.frexp(max(abs(x), abs(y), abs(z)))[1]
+    if abs(exponent) > 500:
+        x, y, z = (math.ldexp(c, -exponent) for c in (x, y, z))
+    return (x, y, z)
+
+
+def _in(lo: float, hi: float, unit: str) -> Callable[[Any], float]:
+    """A number between ``lo`` and ``hi`` (in ``unit``); a non-positive one is told so as
+    :func:`_positive` (or :func:`_non_negative` when ``lo`` is 0) tells it."""
+    def check(v: Any) -> float:
+        x = _positive(v) if lo > 0 else _non_negative(v)
+        if not lo <= x <= hi:
+            span = (f"at least {ranges.fmt(lo)}" if hi == math.inf else
+                    f"between {ranges.fmt(lo)} and {ranges.fmt(hi)}")
+            raise ValueError(f"must be {span} {unit}, got {ranges.fmt(x)}")
+        return x
+    return check
+
+
+def _vec_within(hi: float, unit: str, what: str = "each component") -> Callable[[Any], Vec]:
+    """Three numbers, each at most ``hi`` (in ``unit``) in size."""
+    def check(v: Any) -> Vec:
+        x, y, z = _vec(v)
+        top = max(abs(x), abs(y), abs(z))
+        if top > hi:
+            raise ValueError(f"must have {what} within +-{ranges.fmt(hi)} {unit}, "
+                             f"got {ranges.fmt(top)}")
+        return (x, y, z)
+    return check
+
+
 MAX_TITLE = 300     # characters: a title is one line across the canvas (900 px show ~75)
 MAX_WORD = 100      # characters of any other text: a colour, a choice
 
@@ -159,36 +194,51 @@ def _coils(limit: int, whole: bool = False) -> Callable[[Any], float]:
     return check
 
 
+MIN_FOV, MAX_FOV = 1e-3, 3.1     # radians: 0.06 to 178 degrees (VTK's view angle stops at 179)
+
+
 def _fov(v: Any) -> float:
     x = _positive(v)
     if x >= math.pi:
         raise ValueError(f"must be below pi (radians), got {x:g}")
+    if not MIN_FOV <= x <= MAX_FOV:
+        raise ValueError(f"must be between {MIN_FOV:g} and {MAX_FOV:g} rad, got {x:g}")
     return x
 
+
+# Absolute ranges (SI), wide enough for the page's metre-scale scenes and for atoms;
+# what depends on the scene's scale is checked against it in springscene.ranges.
+MASS = _in(1e-30, 1e6, "kg")
+STIFFNESS = _in(1e-9, 1e12, "N/m")
+LENGTH = _in(1e-15, 1e6, "m")            # a femtometre to 1000 km
+SPEED_OF_LIGHT = 299_792_458.0
 
 # section -> key -> checker; the keys are the dataclasses' fields.
 _CHECKS: dict[str, dict[str, Callable[[Any], Any]]] = {
     "scene": {"title": _title, "width": _canvas, "height": _canvas,
               "background": _color},
-    "camera": {"center": _vec, "forward": _nonzero_vec, "up": _nonzero_vec, "fov": _fov,
+    "camera": {"center": _vec, "forward": _direction, "up": _direction, "fov": _fov,
                "range": _positive},
-    "physics": {"dt": _positive, "g": _vec, "integrator": _choice(*integrators.NAMES)},
-    "damping": {"b": _non_negative},
+    "physics": {"dt": _in(1e-20, math.inf, "s"),      # its top: the integrator's stability
+                "g": _vec_within(1e4, "m/s^2"), "integrator": _choice(*integrators.NAMES)},
+    "damping": {"b": _in(0, 1e9, "kg/s")},
     "drive": {"type": _choice("none", "support", "force"), "amplitude": _positive,
-              "omega": _positive, "direction": _nonzero_vec},
+              "omega": _in(1e-9, 1e20, "rad/s"), "direction": _direction},
     "holder": {"pos": _vec, "size": _positive_vec, "color": _color},
-    "spring": {"k": _positive, "L0": _positive, "radius": _positive, "thickness": _non_negative,
-               "coils": _coils(MAX_COILS, whole=True), "color": _color, "k3": _non_negative,
-               "yield_stretch": _positive},
-    "ball": {"m": _positive, "radius": _positive, "pos": _vec, "p": _vec, "color": _color},
+    "spring": {"k": STIFFNESS, "L0": LENGTH, "radius": _positive, "thickness": _non_negative,
+               "coils": _coils(MAX_COILS, whole=True), "color": _color,
+               "k3": _non_negative, "yield_stretch": _positive},
+    "ball": {"m": MASS, "radius": _positive, "pos": _vec, "p": _vec, "color": _color},
     "render": {"fps": _positive_int, "duration": _non_negative, "speed": _positive,
                "color_by": _choice(*COLOR_BY)},
-    "lattice": {"shape": _shape, "spacing": _positive, "density": _positive,
+    "lattice": {"shape": _shape, "spacing": LENGTH, "density": _in(1e-3, 1e6, "kg/m^3"),
                 "fixed": _choice(*FIXED_MODES)},
-    "bond": {"k": _positive, "color": _color, "style": _choice(*BOND_STYLES),
+    "bond": {"k": STIFFNESS, "color": _color, "style": _choice(*BOND_STYLES),
              "radius": _positive, "thickness": _non_negative, "coils": _coils(MAX_BOND_COILS)},
-    "atom": {"m": _positive, "molar_mass": _positive, "radius": _positive, "color": _color},
-    "start": {"kick": _vec, "temperature": _non_negative, "seed": _whole},
+    "atom": {"m": MASS, "molar_mass": _in(1e-7, 1e4, "kg/mol"), "radius": _positive,
+             "color": _color},
+    "start": {"kick": _vec_within(SPEED_OF_LIGHT, "m/s (the speed of light)"),
+              "temperature": _non_negative, "seed": _whole},     # its top: ranges
     "pull": {"force": _non_negative},
 }
 
@@ -300,6 +350,7 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
                         "the atoms of a [lattice] config")
     if cfg.is_lattice:
         _check_lattice(cfg, where)
+        ranges.check(cfg, where)
         problem = stability_problem(cfg)
         if problem:
             raise UserError(f"{where('physics.dt', 'physics.integrator')}: {problem}")
@@ -310,6 +361,7 @@ def _check_whole(cfg: Config, flags: dict[str, str] | None = None) -> None:
         for key in ("amplitude", "omega"):
             if getattr(d, key) <= 0:
                 raise UserError(f"{src}: [drive] {key} is required (> 0) when type = {d.type!r}")
+    ranges.check(cfg, where)
     s = cfg.spring
     weight_stretch = cfg.ball.m * float(np.linalg.norm(cfg.physics.g)) / s.k
     if s.yield_stretch <= weight_stretch:

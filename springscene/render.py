@@ -223,7 +223,9 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     duration, fps = cfg.render.duration, cfg.render.fps
     steps = frame_steps(duration, fps, cfg.physics.dt, cfg.render.speed)
     if len(steps) == 0:
-        raise UserError(f"--duration {duration:g} at --fps {fps} gives no frame")
+        raise UserError(f"--duration {duration:g} at --fps {fps} and --speed "
+                        f"{cfg.render.speed:g} gives no frame (a video of "
+                        f"{duration / cfg.render.speed:.3g} s)")
     check_video_fps(path, fps)
     note = repeated_frames(steps, fps, cfg.physics.dt, cfg.render.speed)
     if note:

@@ -400,9 +400,10 @@ def step(s: System, n: int = 1) -> System:
 
     with np.errstate(over="ignore", invalid="ignore"):   # a blow-up is reported below
         _advance(s, n, advance, m, f, beta, drive, plastic)
-    if not np.isfinite(s.pos).all():
+    if not (np.isfinite(s.pos).all() and np.isfinite(s.p).all()):
         raise UserError(
-            f"the simulation blew up by t = {s.t:.4g} s (positions are no longer finite): "
+            f"the simulation blew up by t = {s.t:.4g} s (positions or momenta are no longer "
+            "finite): "
             f"dt = {s.dt:g} s is too large for how stiff the springs get (a large k3?); "
             "use a smaller --dt or [physics] dt")
     return s
@@ -470,14 +471,22 @@ def energies(s: System) -> Energies:
     """K = |p|^2/2m, Us = 1/2 k s^2 + 1/4 k3 s^4, Ug = -m g . (r - r_ref), and E_thermal.
 
     ``r_ref`` is the first fixed node's starting position (the holder), so with
-    g = <0, -9.8, 0> Ug = m |g| y with y measured from the holder's height.
+    g = <0, -9.8, 0> Ug = m |g| y with y measured from the holder's height. Energies that
+    are no longer finite (values beyond double precision) raise :class:`UserError`.
     """
     free = s.free
-    K = float(np.sum(np.einsum("ij,ij->i", s.p[free], s.p[free]) / (2.0 * s.m[free])))
-    _, mag = spring_vectors(s)
-    Us = float(np.sum(_spring_energy(s.k, s.k3, mag - s.L0)))
-    Ug = float(np.sum(-s.m[free] * ((s.pos[free] - s.ref) @ s.g)))
-    return Energies(K, Us, Ug, s.E_thermal)
+    with np.errstate(over="ignore", invalid="ignore"):     # reported below, in one line
+        K = float(np.sum(np.einsum("ij,ij->i", s.p[free], s.p[free]) / (2.0 * s.m[free])))
+        _, mag = spring_vectors(s)
+        Us = float(np.sum(_spring_energy(s.k, s.k3, mag - s.L0)))
+        Ug = float(np.sum(-s.m[free] * ((s.pos[free] - s.ref) @ s.g)))
+    e = Energies(K, Us, Ug, s.E_thermal)
+    if not math.isfinite(e.total):
+        raise UserError(f"the simulation blew up by t = {s.t:.4g} s (its energies are no "
+                        f"longer finite: K = {K:.3g} J, Us = {Us:.3g} J, Ug = {Ug:.3g} J): "
+                        "dt is too large for how stiff the springs get, or the config's "
+                        "numbers are beyond double precision")
+    return e
 
 
 @dataclass

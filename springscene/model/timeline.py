@@ -72,7 +72,7 @@ def frame_steps(duration: float, fps: int, dt: float, speed: float = 1.0) -> np.
     step_at(duration, dt, "--duration")
     frames = duration / speed * fps
     if frames > MAX_FRAMES:
-        raise UserError(f"--duration {duration:g} at --fps {fps} and speed {speed:g} is "
+        raise UserError(f"--duration {duration:g} at --fps {fps} and --speed {speed:g} is "
                         f"{frames:.3g} frames; the limit is {MAX_FRAMES:,}")
     n = int(round(frames))
     return np.rint(np.arange(n) * (speed / (fps * dt))).astype(np.int64)

@@ -31,6 +31,7 @@ from typing import Iterable
 import numpy as np
 
 from ..colors import Color
+from ..errors import UserError
 from ..model.lattice import Lattice
 from ..model.physics import System
 from ..settings import AtomCfg, BondCfg, CameraCfg, SceneCfg
@@ -120,6 +121,9 @@ def color_scale(kind: str, states: Iterable[System], n_values: int, lat: Lattice
         hi = max(hi, float(np.quantile(scalar(kind, later, sites)[~later.fixed], quantile)))
     if not hi > 0:
         hi = 0.01 * (lat.d if kind == "displacement" else lat.sound_speed)
+    if not math.isfinite(hi):       # the config's checks keep this from happening
+        raise UserError(f"the atoms' {kind} is no longer finite ({hi}): the lattice's numbers "
+                        "are beyond double precision")
     return 0.0, nice_ceil(hi)
 
 

@@ -236,7 +236,7 @@ LATTICE_BAD = [
     ({"bond": {"coils": 1e7}}, "[bond] coils must be at most 50"),
     ({"camera": {"forward": [0, 1, 0], "up": [0, 2, 0]}}, "[camera] up must not be parallel"),
     ({"start": {"temperature": 10.0}}, "[start] takes a kick or a temperature, not both"),
-    ({"atom": {"m": 1e-300}}, "is unstable"),
+    ({"atom": {"m": 1e-300}}, "[atom] m must be between 1e-30 and 1e6 kg, got 1e-300"),
 ]
 
 
