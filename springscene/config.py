@@ -455,7 +455,7 @@ def load(path: str | Path) -> Config:
     path = Path(path)
     raw = read_config_bytes(path)
     try:
-        data = tomllib.loads(raw.decode("utf-8"))
+        data = tomllib.loads(raw.decode("utf-8-sig"))   # (a BOM, as some editors write)
     except UnicodeDecodeError:
         raise UserError(f"{path}: not UTF-8 text") from None
     except tomllib.TOMLDecodeError as exc:

@@ -174,3 +174,12 @@ def test_a_usage_error_starts_springscene_as_every_message_does(args, message):
     assert proc.returncode == 2
     (line,) = proc.stderr.splitlines()
     assert line.startswith(message), line
+
+
+def test_a_config_saved_with_a_byte_order_mark_reads_as_without(tmp_path):
+    """Some editors start UTF-8 with a BOM; tomllib refused it as 'Invalid statement'."""
+    from springscene import config
+
+    bom = tmp_path / "bom.toml"
+    bom.write_bytes(b"\xef\xbb\xbf" + WIKI.read_bytes())
+    assert config.load(bom) == config.load(WIKI)
