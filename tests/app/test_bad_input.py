@@ -178,8 +178,12 @@ def test_a_usage_error_starts_springscene_as_every_message_does(args, message):
 
 def test_a_config_saved_with_a_byte_order_mark_reads_as_without(tmp_path):
     """Some editors start UTF-8 with a BOM; tomllib refused it as 'Invalid statement'."""
+    import dataclasses
+
     from springscene import config
 
     bom = tmp_path / "bom.toml"
     bom.write_bytes(b"\xef\xbb\xbf" + WIKI.read_bytes())
-    assert config.load(bom) == config.load(WIKI)
+    read, wiki = config.load(bom), config.load(WIKI)
+    assert read.source == str(bom)
+    assert dataclasses.replace(read, source=wiki.source) == wiki
