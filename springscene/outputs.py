@@ -137,8 +137,8 @@ def write_png(path: Path, image: np.ndarray) -> None:
     import imageio.v3 as iio  # noqa: PLC0415  heavy: imageio
 
     data = iio.imwrite("<bytes>", image, extension=".png")
-    with atomic_path(path) as tmp, open(tmp, "wb") as fh:
-        fh.write(data)
+    with atomic_path(path) as tmp:
+        tmp.write_bytes(data)
 
 
 class VideoWriter:

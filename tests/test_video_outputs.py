@@ -18,7 +18,6 @@ import textwrap
 import time
 from pathlib import Path
 
-import imageio.v3 as iio
 import imageio_ffmpeg
 import numpy as np
 import pytest
@@ -305,12 +304,15 @@ def test_a_read_only_folder_is_one_line_exit_1(read_only):
                                           (errno.EDQUOT, "disk quota exceeded")])
 def test_a_write_that_fails_names_the_output_not_its_temporary(tmp_path, monkeypatch, code,
                                                                reason):
-    """Without a file system to fill: a PNG writer that fails as a full disk does."""
-    def failing(path, *a, **k):
-        Path(path).write_bytes(b"half a picture")
+    """Without a file system to fill: a PNG write that fails as a full disk does (the PNG
+    is encoded in memory, then written)."""
+    write = Path.write_bytes
+
+    def failing(self, data):
+        write(self, data[:10])
         raise OSError(code, os.strerror(code))
 
-    monkeypatch.setattr(iio, "imwrite", failing)
+    monkeypatch.setattr(Path, "write_bytes", failing)
     out = tmp_path / "frame.png"
     with pytest.raises(OutputError) as caught:
         write_png(out, np.zeros((4, 4, 3), np.uint8))
@@ -322,10 +324,10 @@ def test_a_write_that_fails_names_the_output_not_its_temporary(tmp_path, monkeyp
 def test_a_failed_write_inside_another_names_its_own_file(tmp_path, monkeypatch):
     """A program's scene.capture PNG fails while its video is being written: the message
     names the PNG, not the video."""
-    def failing(path, *a, **k):
-        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(path))
+    def failing(self, data):
+        raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC), str(self))
 
-    monkeypatch.setattr(iio, "imwrite", failing)
+    monkeypatch.setattr(Path, "write_bytes", failing)
     video_out, capture = tmp_path / "run.mp4", tmp_path / "capture.png"
     with pytest.raises(OutputError) as caught:
         with atomic_path(video_out):

@@ -19,7 +19,9 @@ from __future__ import annotations
 
 import colorsys
 import math
+import re
 
+from ..errors import OutputError, UserError
 from ..view.scene import LIGHTS
 from . import runtime, widgets
 from .checks import _vec
@@ -34,6 +36,35 @@ MAX_SIDE = 8192    # pixels a side; VPython sets no limit (GlowScript hands any 
 class CanvasSizeError(ValueError):
     """A canvas width or height no picture can have; the runner reports it on one line
     at the program's line that set it."""
+
+
+class CaptureError(CanvasSizeError):
+    """A ``scene.capture`` that could not be written: one line at the program's line, as
+    a canvas size (the runner reports both alike)."""
+
+
+CAPTURE_BYTES = 241    # a capture's longest name, .png included: its temporary file
+                       # ".NAME.XXXXXXXX.png" (outputs.atomic_path) must fit in 255 bytes
+
+
+def capture_name(filename) -> str:
+    """The file a capture goes to, as a browser saves VPython's download: the last part of
+    the name (no folders), control characters (NUL, newlines) as ``_``, ``.png`` added, cut
+    to :data:`CAPTURE_BYTES`. A name left empty or hidden (``""``, ``".x"``) is named after
+    the output by the runner."""
+    name = str(filename).replace("\\", "/").rsplit("/", 1)[-1]
+    name = "".join("_" if ord(c) < 32 or ord(c) == 127 else c for c in name)
+    name = name.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
+    stem, png = (name[:-4], name[-4:]) if name.lower().endswith(".png") else (name, ".png")
+    while len((stem + png).encode("utf-8")) > CAPTURE_BYTES:
+        stem = stem[:-1]
+    return stem + png
+
+
+def _shown(value) -> str:
+    """``value`` quoted for a one-line message (escaped, and cut if long)."""
+    text = repr(str(value))
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def _side(cv: "canvas", name: str, value):
@@ -423,11 +454,19 @@ class canvas:
         self._follow = obj
 
     def capture(self, filename: str, *args) -> None:
-        """Save the canvas as ``filename`` (.png added) beside the output, at this moment."""
-        name = str(filename)
-        if not name.lower().endswith(".png"):
-            name += ".png"
-        runtime.capture(self, name)
+        """Save the canvas as ``filename`` (.png added) beside the output, at this moment
+        (:func:`capture_name`; a name captured again replaces the earlier picture). A
+        capture that cannot be written is one line at the program's line."""
+        name = capture_name(filename)
+        try:
+            runtime.capture(self, name)
+        except OutputError:                 # no space: one line naming the file, already
+            raise
+        except (UserError, OSError) as exc:
+            why = getattr(exc, "strerror", None) or str(exc)
+            found = re.search(r"\(([^()]*)\)$", why)
+            raise CaptureError(f"scene.capture({_shown(filename)}): cannot be written beside "
+                               f"the output ({found[1] if found else why})") from None
 
     def pixel_to_world(self, pixels: float) -> float:
         return 2 * self._range_now() * pixels / min(self.width, self.height)

@@ -14,11 +14,9 @@ the exit status.
 from __future__ import annotations
 
 import atexit
-import ctypes
 import gc
 import json
 import os
-import signal
 import sys
 import threading
 import time
@@ -26,11 +24,10 @@ import traceback
 from pathlib import Path
 
 from ..errors import ProgramError, UserError
-from . import runtime
+from . import lineage, runtime
 from .runner import ProgramExit, _user_traceback, run_program
 
 PROGRESS_EVERY = 0.25       # seconds of wall clock between progress reports
-PR_SET_PDEATHSIG = 1
 
 
 class Reporter:
@@ -46,18 +43,27 @@ class Reporter:
             try:
                 self.pipe.write(line)
                 self.pipe.flush()
-            except (BrokenPipeError, OSError):
-                os._exit(1)         # nobody to report to: the parent was killed
+            except (BrokenPipeError, OSError):  # nobody to report to: the parent was killed
+                lineage.parent_gone()
 
     def end(self, kind: str, **fields) -> None:
         """How the run ended, once the program's output is flushed, with the names of the
         threads it left running (the parent ends this process rather than wait for them)."""
-        sys.stdout.flush()
-        sys.stderr.flush()
+        flush_output()
+        lineage.end_descendants()       # what the program started dies with its run
         lingering = [t.name for t in threading.enumerate()
                      if t is not threading.main_thread() and not t.daemon and t.is_alive()]
         self.send(kind, threads=lingering, **fields,
                   progress=progress(runtime.last(), None))
+
+
+def flush_output() -> None:
+    """The program's printed output flushed, unless the program closed (or broke) a stream."""
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError, AttributeError):
+            pass
 
 
 def _plain(value):
@@ -75,7 +81,8 @@ def progress(timeline: runtime.Timeline | None, where: int | None) -> dict:
     kind, arg = timeline.last_call
     return {"started": True, "clock": float(timeline.clock), "frames": timeline.frames,
             "fps": timeline.fps, "calls": timeline.calls + timeline.sleeps, "call": kind, "arg": _plain(arg),
-            "span": float(timeline.last_span), "line": where}
+            "span": float(timeline.last_span), "line": where,
+            "ended": runtime.current() is None}     # the program's end: its files finishing
 
 
 def program_line(thread_id: int, program: str) -> int | None:
@@ -93,16 +100,6 @@ def _watch(reporter: Reporter, thread_id: int, program: str) -> None:
         time.sleep(PROGRESS_EVERY)
         reporter.send("progress", **progress(runtime.last(), program_line(thread_id,
                                                                          program)))
-
-
-def _die_with_parent(parent: int) -> None:
-    """Linux: this process is killed when the parent dies (even by SIGKILL)."""
-    try:
-        ctypes.CDLL(None, use_errno=True).prctl(PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-    except (OSError, AttributeError):
-        pass
-    if os.getppid() != parent:
-        os._exit(1)
 
 
 def _watch_reads(folder: Path) -> set[str]:
@@ -137,7 +134,8 @@ def _done(reporter: Reporter, result, read: set[str]) -> None:
                   program_seconds=result.program_seconds, ended=result.ended,
                   size=list(result.size) if result.size else None, dialect=result.dialect,
                   page=str(result.page) if result.page else None,
-                  images=[str(p) for p in result.images], notes=result.notes)
+                  images=list(dict.fromkeys(str(p) for p in result.images)),
+                  notes=result.notes)
 
 
 def run(reporter: Reporter, request: dict) -> None:
@@ -175,9 +173,11 @@ def run(reporter: Reporter, request: dict) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     fd, parent, request = (argv or sys.argv[1:])[:3]
-    _die_with_parent(int(parent))
-    reporter = Reporter(int(fd))
     request = json.loads(request)
+    lineage.die_with_parent(int(parent), Path(request["out"]).parent,
+                            request.pop("parent_thread", None))
+    reporter = Reporter(int(fd))
+    lineage.guard_forks(int(fd))
     threading.Thread(target=_watch, name="springscene-progress", daemon=True,
                      args=(reporter, threading.get_ident(),
                            str(Path(request["program"])))).start()
@@ -186,8 +186,7 @@ def main(argv: list[str] | None = None) -> int:
                if t is not threading.main_thread()):
         gc.collect()                # the program's unclosed files are flushed and closed
         atexit._run_exitfuncs()     # its exit functions; then skip tearing down VTK (0.3 s)
-        sys.stdout.flush()
-        sys.stderr.flush()
+        flush_output()
         os._exit(0)
     return 0                        # the parent ends the threads left running
 

@@ -17,6 +17,7 @@ killer's SIGKILL)
 over ``--max-memory``                          killed, exit 137 (as the OOM killer's)
 over ``--timeout``                             killed, exit 124 (as coreutils' timeout)
 a thread left running after the program ends   the files, the child killed, exit 0
+processes it started (forks, daemons)          the files, those killed (:mod:`.lineage`)
 ============================================  ====================================
 
 Each abnormal ending is one line with the peak memory and the program time reached.
@@ -84,13 +85,15 @@ def run_supervised(program, out, *, timeout: float | None = None,
                   say or (lambda line: print(line, file=sys.stderr, flush=True)))
     _remove_abandoned(out)
     try:
+        # absolute: the program may change its working folder before it writes there
         folder = Path(tempfile.mkdtemp(prefix=f"{_hidden(out)}.{os.getpid()}.", suffix=".run",
-                                       dir=out.parent or "."))
+                                       dir=os.path.abspath(out.parent or ".")))
     except OSError as exc:
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
     try:
         with _stop_signals():
-            request = {"program": str(path), "out": str(folder / out.name), **options}
+            request = {"program": str(path), "out": str(folder / out.name), **options,
+                       "parent_thread": threading.get_native_id()}   # (see .lineage)
             report = _supervise(_start(request), watch, on_dialect)
             return _finish(report, watch, folder, out)
     finally:
@@ -174,7 +177,9 @@ def _supervise(child: subprocess.Popen, watch: Watch, on_dialect) -> dict:
             elif fd is None:
                 time.sleep(POLL)
             status = _check(child, watch, state["report"])
-        while fd is not None and select.select([fd], [], [], 0)[0]:
+        drained = time.monotonic() + GRACE      # (bounded: not a pipe someone keeps full)
+        while fd is not None and select.select([fd], [], [], 0)[0] and \
+                time.monotonic() < drained:
             fd = _read(fd, state, watch, on_dialect)
     finally:
         if fd is not None:
@@ -296,9 +301,10 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
     def placed(name: str | None) -> Path | None:
         return None if name is None else out.parent / Path(name).name
 
-    images = [placed(p) for p in report["images"]]
+    # a name captured twice is one file (the last capture); the video's own name last
+    images = [p for p in dict.fromkeys(placed(p) for p in report["images"]) if p != out]
     page = placed(report["page"])
-    targets = images + ([page] if page else []) + [out]
+    targets = list(dict.fromkeys(images + ([page] if page else []))) + [out]
     read = set(report.get("read", ()))
     for target in targets:
         if os.path.realpath(target) in read:

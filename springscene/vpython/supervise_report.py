@@ -153,6 +153,9 @@ def stall_line(watch: Watch, now: float) -> str:
                 f"holds Python (a big numpy operation, or VTK loading){line}")
     if not p.get("started"):
         return f"{head}: the program is still setting up{line}"
+    if p.get("ended"):
+        return (f"{head}: the program has ended, {watch.where()}; its video is being "
+                "finished")
     due = p["frames"] / p["fps"]
     calls = p["calls"] - before.get("calls", 0)
     clock = (f"at {p['clock']:.6g} s of program time; the next frame comes when it passes "
