@@ -80,6 +80,9 @@ def _status_field_of(file: str, name: str) -> int:
     return 0
 
 
+MAX_MEMORY = 1 << 50        # 1024T: a size beyond any machine's is a typo, not a limit
+
+
 def memory_limit(max_memory) -> int:
     """``--max-memory`` in bytes: a size (``"2G"``), bytes, or None for the default share."""
     if max_memory is None:
@@ -90,6 +93,9 @@ def memory_limit(max_memory) -> int:
     except (ValueError, TypeError, OverflowError):
         raise UserError(f"--max-memory {max_memory}: give a size such as 500M or 2G") \
             from None
+    if limit > MAX_MEMORY:
+        raise UserError(f"--max-memory {max_memory}: more than any machine has; give at most "
+                        f"{size_text(MAX_MEMORY)} (a size such as 500M or 2G)")
     if limit < MIN_MEMORY:
         raise UserError(f"--max-memory {max_memory}: {size_text(limit)} is too little for a run; "
                    f"give at least {size_text(MIN_MEMORY)} (a size such as 500M or 2G)")

@@ -146,6 +146,7 @@ def test_max_memory_stops_a_memory_hog_with_137(tmp_path, outdir):
 @pytest.mark.parametrize("args, message", [
     (["--max-memory", "lots"], "--max-memory lots: give a size such as 500M or 2G"),
     (["--max-memory", "10"], "too little"),
+    (["--max-memory", "99999999999999999999999T"], "more than any machine has; give at most 1024T"),
     (["--max-memory=-2G"], "--max-memory -2G"),
     (["--timeout", "0"], "--timeout 0: must be a number of seconds above 0"),
     (["--timeout", "nan"], "--timeout nan"),
