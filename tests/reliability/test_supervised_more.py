@@ -10,7 +10,6 @@ import os
 import signal
 import subprocess
 import sys
-import textwrap
 import time
 from pathlib import Path
 
@@ -21,21 +20,12 @@ import pytest
 from conftest import ROOT, small_disk
 from springscene.vpython.supervise_report import Watch, stall_line
 
-TINY = "from vpython import *\nscene.width = 64\nscene.height = 48\nb = sphere()\n"
+import test_supervised
+from test_supervised import TINY, program
+
+outdir = test_supervised.outdir          # the fixture: an empty output folder
+
 DIALECT = "written for VPython 7"
-
-
-def program(tmp_path: Path, body: str, name: str = "prog.py") -> Path:
-    path = tmp_path / name
-    path.write_text(TINY + textwrap.dedent(body))
-    return path
-
-
-@pytest.fixture
-def outdir(tmp_path) -> Path:
-    folder = tmp_path / "out"
-    folder.mkdir()
-    return folder
 
 
 def run(*args, timeout: float = 120) -> subprocess.CompletedProcess:
