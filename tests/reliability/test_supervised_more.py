@@ -21,7 +21,7 @@ from conftest import ROOT, small_disk
 from springscene.vpython.supervise_report import Watch, stall_line
 
 import test_supervised
-from test_supervised import TINY, program
+from test_supervised import program
 
 outdir = test_supervised.outdir          # the fixture: an empty output folder
 
