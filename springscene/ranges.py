@@ -190,7 +190,9 @@ def scene_box(cfg: Config) -> tuple[np.ndarray, np.ndarray]:
 
 def _camera(cfg: Config, where: Where) -> None:
     lo, hi = scene_box(cfg)
-    size = norm(hi - lo) / 2                      # the scene's half-diagonal
+    # the scene's half-diagonal, or the spring's reach when the motion goes farther (a
+    # soft spring sags metres below where it starts: a camera set on the motion is fine)
+    size = max(norm(hi - lo) / 2, 0.0 if cfg.is_lattice else reach(cfg))
     middle = (lo + hi) / 2
     c = cfg.camera
     what = f"half its diagonal, {fmt(size)} m"
@@ -200,13 +202,13 @@ def _camera(cfg: Config, where: Where) -> None:
                  f"{fmt(CAMERA_RANGE[1])} times the scene's size, {what}")
         w, h = cfg.scene.width, cfg.scene.height
         aspect = max(w / h, h / w)        # range is the half-size of the smaller side
-        reach, why = size + 2 * c.range * aspect, f"beyond it [camera] range {fmt(c.range)} m " \
+        limit, why = size + 2 * c.range * aspect, f"beyond it [camera] range {fmt(c.range)} m " \
             "frames none of the scene"
     else:
-        reach, why = CAMERA_OFFSET * size, f"{fmt(CAMERA_OFFSET)} times the scene's size, " \
+        limit, why = CAMERA_OFFSET * size, f"{fmt(CAMERA_OFFSET)} times the scene's size, " \
             f"{what}: farther, autoscale shows it as a speck"
     off = norm(np.asarray(c.center, float) - middle)
-    if off > reach:
+    if off > limit:
         raise UserError(f"{where('camera.center')} [{', '.join(fmt(v) for v in c.center)}] is "
                         f"{fmt(off)} m from the scene's middle "
-                        f"[{', '.join(fmt(v) for v in middle)}]: at most {fmt(reach)} m ({why})")
+                        f"[{', '.join(fmt(v) for v in middle)}]: at most {fmt(limit)} m ({why})")

@@ -277,3 +277,14 @@ def test_a_soft_spring_sagging_tens_of_its_length_is_a_config_not_an_error(tmp_p
     image = render.still(cfg, 0.8, tmp_path / "soft.png", antialias=False)
     red = (image[..., 0] > 150) & (image[..., 1] < 80) & (image[..., 2] < 80)
     assert red.sum() > 10                                  # the ball, not a blank picture
+
+
+def test_a_camera_set_on_a_soft_springs_motion_is_accepted(tmp_path):
+    """k = 0.5 N/m: the ball sags 1.96 m; a camera centred 2 m down with range 2.5 m frames
+    the motion (it was refused against the scene at the start: at most 1.58 m)."""
+    text = WIKI.read_text().replace("k = 15.0", "k = 0.5")
+    text = text.replace("center = [0, -0.10, 0]", "center = [0, -2, 0]\nrange = 2.5")
+    soft = tmp_path / "soft.toml"
+    soft.write_text(text)
+    cfg = config.load(soft)
+    assert (cfg.camera.center, cfg.camera.range) == ((0.0, -2.0, 0.0), 2.5)
