@@ -50,6 +50,7 @@ class Reporter:
         """How the run ended, once the program's output is flushed, with the names of the
         threads it left running (the parent ends this process rather than wait for them)."""
         flush_output()
+        lineage.join_workers()          # its multiprocessing workers finish, as Python's
         lineage.end_descendants()       # what the program started dies with its run
         lingering = [t.name for t in threading.enumerate()
                      if t is not threading.main_thread() and not t.daemon and t.is_alive()]

@@ -66,6 +66,38 @@ def die_with_parent(parent: int, folder: Path, thread: int | None = None) -> Non
     _prctl(PR_SET_PDEATHSIG, signal.SIGTERM)
     if os.getppid() != parent:           # died before the request: no signal will come
         orphaned()
+    _start_watcher()
+
+
+def _start_watcher() -> None:
+    """A watcher process, for when this one cannot clean up: the kernel's SIGTERM is handled
+    in Python, which a program stuck in one long C call (a huge ``sum(range(...))``) does
+    not reach; then springscene's limits are gone with it. Once springscene is dead, the
+    watcher gives this process :data:`GRACE` s to end by itself, then kills it and its
+    process group and removes the run's folder. Forked here, before the program starts:
+    no thread and no fork hook yet. It ends when this process ends (the run's end kills
+    it with the rest of what this process started)."""
+    child = os.getpid()
+    if os.fork():
+        return
+    try:
+        while os.getppid() == child:
+            time.sleep(WATCH_EVERY)
+            if _gone(_state["parent"], _state["thread"] or _state["parent"]):
+                deadline = time.monotonic() + GRACE
+                while os.getppid() == child and time.monotonic() < deadline:
+                    time.sleep(WATCH_EVERY / 4)
+                if os.getppid() == child:                  # stuck: not in Python
+                    os.kill(child, signal.SIGKILL)
+                    _remove_run_folder()
+                    os.killpg(os.getpgid(0), signal.SIGKILL)
+                break
+    finally:
+        os._exit(0)
+
+
+WATCH_EVERY = 0.1       # s between the watcher's looks at springscene
+GRACE = 1.0             # s the child has to clean up by itself once springscene is gone
 
 
 def parent_gone() -> None:
@@ -84,6 +116,11 @@ def parent_dead() -> bool:
     parent, thread = _state["parent"], _state["thread"] or _state["parent"]
     if os.getppid() != parent:
         return True
+    return _gone(parent, thread)
+
+
+def _gone(parent: int, thread: int) -> bool:
+    """Whether ``parent``'s thread ``thread`` is exiting, a zombie or gone (``/proc``)."""
     if not os.path.isdir("/proc/self/task"):
         return False
     try:
@@ -108,12 +145,17 @@ def orphaned() -> None:
     # parent's threads exits, which re-enters here in this thread (and ends it anew)
     _ending.acquire()
     end_descendants()
-    folder = _state["folder"]
-    if folder is not None and folder.name.startswith(".") and folder.name.endswith(".run"):
-        shutil.rmtree(folder, ignore_errors=True)
+    _remove_run_folder()
     if os.getpgid(0) == os.getpid():
         os.killpg(os.getpid(), signal.SIGKILL)
     os._exit(128 + signal.SIGKILL)
+
+
+def _remove_run_folder() -> None:
+    """The run's private folder (only one named as :mod:`.supervise` makes them)."""
+    folder = _state["folder"]
+    if folder is not None and folder.name.startswith(".") and folder.name.endswith(".run"):
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def _processes() -> dict[int, list[int]]:
@@ -143,6 +185,17 @@ def descendants(pid: int | None = None) -> list[int]:
         found.append(p)
         todo.extend(children.get(p, ()))
     return found
+
+
+def join_workers() -> None:
+    """Wait for the program's non-daemon ``multiprocessing`` workers, as Python does at exit
+    (multiprocessing's own exit function joins them; daemonic ones are ended)."""
+    mp = sys.modules.get("multiprocessing")
+    if mp is None:
+        return
+    for worker in mp.active_children():
+        if not worker.daemon:
+            worker.join()
 
 
 def end_descendants(rounds: int = 20) -> None:

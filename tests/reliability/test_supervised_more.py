@@ -267,6 +267,49 @@ def test_a_program_that_kills_springscene_leaves_nothing(tmp_path, outdir, own_h
     assert os.listdir(outdir) == []
 
 
+def test_springscene_killed_while_the_program_is_in_one_long_c_call_leaves_nothing(
+        tmp_path, outdir):
+    """The kernel's SIGTERM is handled in Python, which ``sum(range(10**11))`` does not
+    reach; the watcher process kills the child (and its group) and removes the folder, so
+    no orphan runs on without springscene's limits."""
+    prog = program(tmp_path, """
+        rate(50)
+        sum(range(10**11))
+    """)
+    proc = subprocess.Popen([sys.executable, "-m", "app", "vpython", str(prog), "--out",
+                             str(outdir / "x.mp4")], cwd=ROOT, stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while not list(outdir.iterdir()):                  # the run folder: the child is up
+        assert time.monotonic() < deadline and proc.poll() is None
+        time.sleep(0.05)
+    time.sleep(2)                                      # the program is in its long call
+    proc.kill()
+    proc.wait()
+    assert gone(str(prog), within=10)
+    assert os.listdir(outdir) == []
+
+
+def test_a_programs_multiprocessing_worker_finishes_as_under_python(tmp_path, outdir):
+    """Python joins a non-daemon worker still running at the program's end (it was killed
+    with what the program left)."""
+    prog = program(tmp_path, """
+        import multiprocessing as mp
+        def late():
+            import time
+            time.sleep(0.5)
+            print("late worker done", flush=True)
+        if __name__ == "__main__":
+            for i in range(3):
+                rate(50)
+            mp.Process(target=late).start()
+    """)
+    proc = run("vpython", prog, "--out", outdir / "x.mp4")
+    clean_run(proc, prog)
+    assert "late worker done" in proc.stdout
+    assert sorted(os.listdir(outdir)) == ["x.html", "x.mp4"]
+
+
 def test_a_parent_dead_before_the_child_watched_it_is_caught(tmp_path):
     """The parent may die before the child asks to be told (PR_SET_PDEATHSIG): the child
     compares its parent to the expected one, and cleans up at once."""
