@@ -52,13 +52,15 @@ def capture_name(filename) -> str:
     the name (no folders), control characters (NUL, newlines) as ``_``, ``.png`` added, cut
     to :data:`CAPTURE_BYTES`. A name left empty or hidden (``""``, ``".x"``) is named after
     the output by the runner."""
-    name = str(filename).replace("\\", "/").rsplit("/", 1)[-1]
+    if not isinstance(filename, str):               # VPython's own error
+        raise TypeError("'filename' for Capture must be a string.")
+    name = filename.replace("\\", "/").rsplit("/", 1)[-1]
     name = "".join("_" if ord(c) < 32 or ord(c) == 127 else c for c in name)
-    name = name.encode("utf-8", "surrogateescape").decode("utf-8", "replace")
-    stem, png = (name[:-4], name[-4:]) if name.lower().endswith(".png") else (name, ".png")
-    while len((stem + png).encode("utf-8")) > CAPTURE_BYTES:
-        stem = stem[:-1]
-    return stem + png
+    name = name.encode("utf-8", "replace").decode("utf-8")        # (a lone surrogate: ?)
+    # ".png" added unless the name ends so, exactly (GlowScript's test: "a.PNG.png")
+    stem, png = (name[:-4], ".png") if name.endswith(".png") else (name, ".png")
+    room = CAPTURE_BYTES - len(png)
+    return stem.encode("utf-8")[:room].decode("utf-8", "ignore") + png   # (whole characters)
 
 
 def _shown(value) -> str:

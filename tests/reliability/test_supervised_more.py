@@ -177,12 +177,14 @@ CAPTURES = [
     ("'../sub/dir/name'", "name.png"),
     ("'/'", "x-capture.png"),
     ("'.hidden'", "x-capture.hidden.png"),
-    ("'snap.PNG'", "snap.PNG"),
+    ("'snap.PNG'", "snap.PNG.png"),             # GlowScript's exact test of '.png'
+    ("'\\ud800' + 'x'", "?x.png"),                 # a lone surrogate: no UTF-8 for it
 ]
 
 
 @pytest.mark.parametrize("name, file", CAPTURES,
-                         ids=["long", "nul", "newline", "folders", "slash", "hidden", "png"])
+                         ids=["long", "nul", "newline", "folders", "slash", "hidden", "png",
+                              "surrogate"])
 def test_capture_names_are_sanitised(tmp_path, outdir, name, file):
     prog = program(tmp_path, f"rate(50)\nscene.capture({name})\n")
     proc = run("vpython", prog, "--out", outdir / "x.mp4")
@@ -369,3 +371,11 @@ def test_no_frame_after_the_programs_end_says_the_video_is_being_finished():
     assert line == ("springscene: prog.py: no frame for 10 s of wall clock: the program has "
                     "ended, at 0.12 s of program time (6 frames); its video is being "
                     "finished")
+
+
+def test_a_capture_name_that_is_not_text_is_vpythons_type_error():
+    from springscene.vpython.canvas import capture_name
+
+    with pytest.raises(TypeError, match="'filename' for Capture must be a string."):
+        capture_name(3)
+    assert capture_name("x" * 1_000_000) == "x" * 237 + ".png"     # cut at once, not char by char
