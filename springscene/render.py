@@ -233,8 +233,10 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     system = build.system(cfg)
     start = time.perf_counter()
     panels = make_overlays(cfg, overlays)
-    with make_scene(cfg, system, antialias=antialias, backend=backend) as scene, \
-            atomic_path(path) as tmp:
+    # the scene closed before the video is put in place: its rename is the last act (a
+    # signal during the scene's teardown, after the rename, reported a whole video stopped)
+    with atomic_path(path) as tmp, \
+            make_scene(cfg, system, antialias=antialias, backend=backend) as scene:
         with VideoWriter(tmp, fps, panels.size, quality) as writer:
             loop_start = time.perf_counter()
             for system in play(system, tqdm(steps, desc=path.name, unit="frame",
