@@ -24,6 +24,7 @@ import signal
 import subprocess
 import sys
 import tempfile
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -116,6 +117,16 @@ def _death_signal():
     return lambda: prctl(1, signal.SIGKILL)                  # PR_SET_PDEATHSIG
 
 
+_PIPES: "weakref.WeakSet[FfmpegPipe]" = weakref.WeakSet()   # the pipes made in this process
+
+
+def pipe_fds() -> list[int]:
+    """The file descriptors of the encoders' open stdin pipes: what a fork of a VPython
+    program must let go of, or ffmpeg would wait for its input's end (``vpython.lineage``)."""
+    return [p._proc.stdin.fileno() for p in list(_PIPES)
+            if p._proc.stdin is not None and not p._proc.stdin.closed]
+
+
 class FfmpegPipe:
     """One ffmpeg process reading raw RGB frames of ``size`` on its stdin.
 
@@ -135,6 +146,7 @@ class FfmpegPipe:
         self._proc = subprocess.Popen(cmd, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
                                       stderr=self._log, start_new_session=True,
                                       preexec_fn=_death_signal())
+        _PIPES.add(self)
 
     def send(self, frame: np.ndarray) -> None:
         try:

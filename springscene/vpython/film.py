@@ -9,9 +9,6 @@ A canvas resized during the run is drawn at its new size from then on.
 
 from __future__ import annotations
 
-import gc
-import subprocess
-import weakref
 from pathlib import Path
 
 import numpy as np
@@ -23,31 +20,7 @@ from .graph import graphs
 from .graph_images import GraphStrip
 from .page_frame import PAGE_BACKGROUND, PageLayout, fit
 
-__all__ = ["Film", "Printed", "encoder_fds"]
-
-_FILMS: "weakref.WeakSet[Film]" = weakref.WeakSet()
-
-
-def encoder_fds() -> list[int]:
-    """The file descriptors of the open films' encoder pipes (ffmpeg's stdin), found among
-    what each film's writer holds: what a fork of the program must let go of
-    (:mod:`.lineage`)."""
-    fds, seen = [], set()
-    todo = [(film.writer, 0) for film in list(_FILMS) if film.writer is not None]
-    while todo:
-        obj, depth = todo.pop()
-        if id(obj) in seen or depth > 6:
-            continue
-        seen.add(id(obj))
-        if isinstance(obj, subprocess.Popen):
-            if obj.stdin is not None and not obj.stdin.closed:
-                fds.append(obj.stdin.fileno())
-            continue
-        if isinstance(obj, (dict, list, tuple)) or hasattr(obj, "__dict__"):
-            todo.extend((o, depth + 1) for o in gc.get_referents(obj)
-                        if isinstance(o, (dict, list, tuple, subprocess.Popen))
-                        or type(o).__module__.startswith("springscene."))
-    return fds
+__all__ = ["Film", "Printed"]
 
 
 class Printed:
@@ -92,7 +65,6 @@ class Film:
         self.frames = 0
         self.size: tuple[int, int] | None = None      # a still's (width, height)
         self.notes: list[str] = []
-        _FILMS.add(self)
         if overlays and not canvas_only:
             self.notes.append("--overlay graph: the page video has the graphs already "
                               "(the overlay is for --canvas-only)")

@@ -29,7 +29,8 @@ import time
 from pathlib import Path
 
 from ..errors import ProgramError
-from . import film, runtime
+from .. import video
+from . import runtime
 
 PR_SET_PDEATHSIG = 1
 PR_SET_CHILD_SUBREAPER = 36
@@ -227,7 +228,7 @@ def guard_forks(report_fd: int) -> None:
         try:
             if signal.getsignal(signal.SIGTERM) is _on_term:
                 signal.signal(signal.SIGTERM, signal.SIG_DFL)   # Python's own again
-            for fd in [report_fd, *film.encoder_fds()]:
+            for fd in [report_fd, *video.pipe_fds()]:
                 _to_devnull(fd)
         finally:
             runtime.start = _ends_copy(runtime.start)
