@@ -2,7 +2,7 @@
 
 AtomicSolid (vpython-jupyter ``Demos_no_notebook``: 64 atoms, 144 helix springs) at
 900 x 600, its first frame (the program up to its ``while True`` loop), drawn by
-:class:`springscene.vpython.draw.Renderer` draft and anti-aliased, and timed part by
+:class:`springscene.vpython.draw.renderer.Renderer` draft and anti-aliased, and timed part by
 part (best of a few repeats, ms):
 
 * ``sync``: the program's objects to meshes (numpy: placing the helices and spheres);
@@ -39,8 +39,8 @@ REPEATS = 6
 
 def atomic_solid(antialias: bool):
     """A Renderer holding AtomicSolid's first frame, drawn once for its camera."""
-    import springscene.vpython as vp  # noqa: PLC0415  heavy: vtk, pyvista
-    from springscene.vpython.draw import Renderer  # noqa: PLC0415  heavy: vtk, pyvista
+    import springscene.vpython.api as vp  # noqa: PLC0415  heavy: vtk, pyvista
+    from springscene.vpython.draw.renderer import Renderer  # noqa: PLC0415  heavy: vtk, pyvista
 
     folder = Path(os.environ.get("SPRINGSCENE_DEMOS", "/work/demos"))
     src = (folder / "AtomicSolid.py").read_text().split("while True:")[0]
@@ -128,14 +128,14 @@ def render_variants(r) -> dict:
 
 def sphere_slices(r, vp) -> tuple[float, float]:
     """Spheres alone at 30 slices and at 10 (same pixels, a ninth of the triangles)."""
-    from springscene.vpython import draw  # noqa: PLC0415  heavy: vtk, pyvista
+    from springscene.vpython.draw import renderer  # noqa: PLC0415  heavy: vtk, pyvista
 
     win = r.plotter.ren_win
     batches = {k[0]: b for k, b in r._batches.items() if b.actor is not None}
     for name, b in batches.items():
         b.actor.SetVisibility(name == "sphere")
     at30 = _best(win.Render)
-    saved, draw.SPHERE_STEPS = draw.SPHERE_STEPS, (10,)
+    saved, renderer.SPHERE_STEPS = renderer.SPHERE_STEPS, (10,)
     try:
         _touch(vp)
         r.sync()
@@ -143,7 +143,7 @@ def sphere_slices(r, vp) -> tuple[float, float]:
             b.actor.SetVisibility(name == "sphere")
         return at30, _best(win.Render)
     finally:
-        draw.SPHERE_STEPS = saved
+        renderer.SPHERE_STEPS = saved
 
 
 def main() -> None:

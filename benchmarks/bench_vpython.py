@@ -37,7 +37,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from springscene import config, render  # noqa: E402
-from springscene.vpython.runner import run_program  # noqa: E402
+from springscene.vpython.run.runner import run_program  # noqa: E402
 
 N_SPHERES = 1000
 RADIUS = 0.1             # atoms of a crystal: small beside their spacing (1)
@@ -85,11 +85,11 @@ def batched(lod: bool = True) -> float:
 
     ``lod=False`` keeps VPython's 30 x 30 spheres at every size (no level of detail).
     """
-    import springscene.vpython as vp
-    from springscene.vpython import draw
-    from springscene.vpython.draw import Renderer
+    import springscene.vpython.api as vp
+    from springscene.vpython.draw import renderer
+    from springscene.vpython.draw.renderer import Renderer
 
-    with contextlib.nullcontext() if lod else draw.full_detail():
+    with contextlib.nullcontext() if lod else renderer.full_detail():
         vp.reset()
         balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
                  for p in _grid(N_SPHERES)]
@@ -134,7 +134,8 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
     (``coarse``: helices within that many pixels, ``springscene vpython --lod``)."""
     import random
 
-    from springscene.vpython import draw, helix_batch
+    from springscene.vpython.draw import renderer
+    from springscene.vpython.geometry import helices
 
     src = program.read_text()
     if size is not None:
@@ -142,18 +143,18 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
                           f"scene.width = {size[0]}; scene.height = {size[1]}", 1)
     prog = tmp / program.name
     prog.write_text(src)
-    saved = helix_batch.cull_back_faces
+    saved = helices.cull_back_faces
     if not lod:
-        helix_batch.cull_back_faces = lambda *args: None
+        helices.cull_back_faces = lambda *args: None
     times: list[float] = []
     random.seed(1)
     try:
-        with contextlib.nullcontext() if lod else draw.full_detail():
+        with contextlib.nullcontext() if lod else renderer.full_detail():
             run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
                         page=False, canvas_only=True, lod=coarse,
                         on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
-        helix_batch.cull_back_faces = saved
+        helices.cull_back_faces = saved
     steady = times[3:]
     return (len(steady) - 1) / (steady[-1] - steady[0])
 

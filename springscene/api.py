@@ -452,7 +452,7 @@ def run_vpython(program: str | Path, out: str | Path, *, duration: float | None 
     backend : {"auto", "egl", "osmesa"}
         The off-screen OpenGL.
     **options
-        Any other option of :func:`springscene.vpython.runner.run_program`
+        Any other option of :func:`springscene.vpython.run.runner.run_program`
         (``canvas_only``, ``page``, ``overlays``).
 
     Returns

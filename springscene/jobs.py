@@ -30,8 +30,8 @@ from .science import analysis, matter
 from .science import sweep as sweeps
 from .errors import UserError
 from .settings import Config
-from .vpython.runner import ProgramResult, check_lod, run_program
-from .vpython.supervise import run_supervised
+from .vpython.run.runner import ProgramResult, check_lod, run_program
+from .vpython.run.supervise import run_supervised
 
 RenderStats = pipeline.RenderStats
 
@@ -107,9 +107,9 @@ def figures(cfg: Config, out: str | Path, *, backend: str = "auto",
 def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
             **options) -> ProgramResult:
     """Run a VPython program headless to a video or still (options:
-    :func:`springscene.vpython.runner.run_program`'s). Supervised (the default), it runs
+    :func:`springscene.vpython.run.runner.run_program`'s). Supervised (the default), it runs
     in a child process that cannot leave anything behind, with ``timeout`` and
-    ``max_memory`` (:func:`springscene.vpython.supervise.run_supervised`); otherwise in
+    ``max_memory`` (:func:`springscene.vpython.run.supervise.run_supervised`); otherwise in
     this process (``on_frame`` needs that)."""
     check_lod(options.get("lod"))
     if supervised and options.get("on_frame") is None:

@@ -210,9 +210,9 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
     The default speed is the config's ``[render] speed``: 1 (real time) for the
     page's ball, far less for atoms (10^-12 s of a chain of atoms is a few seconds).
 
-    ``overlays`` (names from :data:`springscene.overlay.OVERLAYS`) add a clock in the
+    ``overlays`` (names from :data:`springscene.view.overlay.OVERLAYS`) add a clock in the
     scene, a y(t) graph below it and energy bars beside it; the scene keeps its size
-    and the video grows around it (:class:`springscene.overlay.Overlays`).
+    and the video grows around it (:class:`springscene.view.overlay.Overlays`).
 
     When ``fps`` asks for more frames than the physics has steps, frames repeat: said
     through ``on_warning(message)``, or else as a Python warning.

@@ -104,7 +104,7 @@ class Video:
 
     ``frames``, ``fps`` and ``seconds`` (wall time); ``result`` is the job's own record
     (:class:`~springscene.render.RenderStats` or
-    :class:`~springscene.vpython.runner.ProgramResult`), whose other fields read through.
+    :class:`~springscene.vpython.run.runner.ProgramResult`), whose other fields read through.
     Up to :data:`EMBED_LIMIT` bytes the file is embedded in the notebook, above it linked
     by its path relative to the notebook's folder.
     """

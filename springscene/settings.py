@@ -125,7 +125,7 @@ class BondCfg:
     """Every bond is a spring of stiffness ``k`` relaxed at the lattice spacing.
 
     ``style`` draws them as helices, cylinders or lines; ``auto`` takes helices
-    up to :data:`springscene.lattice.HELIX_MAX_BONDS` bonds and cylinders beyond.
+    up to :data:`springscene.model.lattice.HELIX_MAX_BONDS` bonds and cylinders beyond.
     ``radius`` (the helix's, or the cylinder's) and ``thickness`` (the helix's wire)
     default to fractions of the spacing.
     """

@@ -247,7 +247,7 @@ def test_run_vpython_is_a_video(tmp_path):
 
 
 def test_scene_capture_outside_springscene_vpython_warns():
-    from springscene.vpython import canvas
+    from springscene.vpython.api import canvas
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         canvas().capture("snap")

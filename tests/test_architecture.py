@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 import re
 import subprocess
+import tomllib
 import sys
 from pathlib import Path
 
@@ -42,7 +43,12 @@ def test_layer_contracts_hold():
     stepping (timeline, integrators, build, config, science), and no module cycle exists."""
     proc = _tool("lint-imports")
     assert proc.returncode == 0, proc.stdout[-3000:] + proc.stderr[-2000:]
-    assert proc.stdout.count("KEPT") == 4 and "BROKEN" not in proc.stdout
+    contracts = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["importlinter"]
+    names = [c["name"] for c in contracts["contracts"]]
+    assert any(c.get("containers") == ["springscene.vpython"] for c in contracts["contracts"])
+    for name in names:
+        assert f"{name} KEPT" in proc.stdout, name
+    assert "BROKEN" not in proc.stdout
 
 
 def test_imports_at_the_top_except_heavy_ones():
@@ -129,3 +135,44 @@ def test_one_si_prefix_table_one_matplotlib_setup_one_set_of_lights():
     assert rc_setups == [Path("springscene/view/plotstyle.py")]
     lights = [p.relative_to(ROOT) for p in _modules() if "0.22, 0.44, 0.88" in p.read_text()]
     assert lights == [Path("springscene/view/scene.py")]
+
+
+def test_no_vpython_module_shares_a_name_with_a_vpython_object():
+    """``from vpython import *`` gives objects (``vector``, ``canvas``, ``graph``, ``shapes``,
+    ``textures``, ...) from :mod:`springscene.vpython.api`; no module of that package has
+    one of their names, so an import of either can never give the other."""
+    from springscene.vpython import api
+
+    modules = {p.stem for p in (PACKAGE / "vpython" / "api").glob("*.py")}
+    assert not modules & set(api.__all__)
+    assert not [n for n in ("vector", "canvas", "graph", "shapes", "textures")
+                if isinstance(getattr(api, n), type(api))]
+
+
+def test_no_module_forwards_names_to_another_of_ours():
+    """No proxies between rooms: a ``__getattr__`` in springscene.vpython never forwards a
+    name to another springscene module (a wrapper of a stream or of numpy.random may)."""
+    for path in (PACKAGE / "vpython").rglob("*.py"):
+        tree = ast.parse(path.read_text())
+        ours = {a.asname or a.name for n in ast.walk(tree)
+                if isinstance(n, ast.ImportFrom) and n.level for a in n.names}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.FunctionDef) and node.name == "__getattr__":
+                targets = {c.args[0].id for c in ast.walk(node) if isinstance(c, ast.Call)
+                           and isinstance(c.func, ast.Name) and c.func.id == "getattr"
+                           and c.args and isinstance(c.args[0], ast.Name)}
+                assert not targets & ours, f"{path.relative_to(ROOT)} forwards to {targets}"
+
+
+def test_architecture_doc_has_short_tables_naming_every_vpython_module():
+    """docs/architecture.md: one short table a package (no cell over 300 characters), and
+    each module of springscene.vpython's rooms named in its room's table."""
+    doc = (ROOT / "docs" / "architecture.md").read_text()
+    cells = [c for line in doc.splitlines() if line.startswith("|") for c in line.split("|")]
+    assert max(map(len, cells)) <= 300
+    for room in sorted(p for p in (PACKAGE / "vpython").iterdir() if (p / "__init__.py").exists()):
+        section = doc.split(f"### `vpython/{room.name}/`")
+        assert len(section) == 2 or room.name in ("geometry", "text"), room.name
+        for module in room.glob("*.py"):
+            if module.stem != "__init__":
+                assert f"`{module.stem}`" in doc or f".{module.stem}`" in doc, module

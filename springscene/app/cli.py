@@ -26,9 +26,9 @@ from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
 from ..view.info import info
 from ..view.overlay import OVERLAYS, parse_overlays
-from ..vpython.runner import MAX_LOD_PX
-from ..vpython.supervise import RunEnded
-from ..vpython.supervise_report import size_text
+from ..vpython.run.runner import MAX_LOD_PX
+from ..vpython.run.supervise import RunEnded
+from ..vpython.run.report import size_text
 
 EXIT_BAD_INPUT = 2
 EXIT_PROGRAM_ERROR = 1     # the user's VPython program raised

@@ -21,7 +21,7 @@ at first order in b dt), makes the heat never negative, and never lets drag
 alone blow up, so over-damped motion is stable at any step. Without drag the
 kick is the page's ``p = p + Fnet*dt``, bit for bit.
 
-Nothing here knows about springs: :mod:`springscene.physics` supplies ``f``.
+Nothing here knows about springs: :mod:`springscene.model.physics` supplies ``f``.
 """
 
 from __future__ import annotations

@@ -3,7 +3,7 @@
 A lattice config ([lattice], [bond], [atom], [start], [pull]) describes atoms of
 mass m on the sites of an nx x ny x nz simple cubic grid of spacing d, each bonded
 to its nearest neighbours by a spring of stiffness k relaxed at d. :func:`build`
-turns it into the same :class:`~springscene.physics.System` the page's single
+turns it into the same :class:`~springscene.model.physics.System` the page's single
 spring uses, with ``grid`` set so that the engine computes the bond forces by
 slicing the grid.
 

@@ -19,7 +19,7 @@ exactly the page's order (Model 14)::
 
 Every operation is the same float64 operation, in the same order, as VPython's
 ``vector`` arithmetic, so a single spring reproduces the wiki's loop bit for bit.
-Other integrators (:mod:`springscene.integrators`) use the same forces.
+Other integrators (:mod:`springscene.model.integrators`) use the same forces.
 
 Beyond Hooke's law (all off by default):
 
@@ -34,7 +34,7 @@ Beyond Hooke's law (all off by default):
   external force ``F0 cos(omega t)`` on chosen nodes;
 - a steady external force per node (``F_ext``), e.g. a bar pulled at one face.
 
-A lattice of atoms (:mod:`springscene.lattice`) is the same system with its
+A lattice of atoms (:mod:`springscene.model.lattice`) is the same system with its
 nodes on a grid: with ``grid = (nx, ny, nz)`` the nodes are the grid's points in
 C order and the springs its bonds, axis by axis (:func:`grid_bonds`), and the
 spring forces are computed on the grid by slicing (a stencil) instead of by
@@ -126,7 +126,7 @@ class System:
         Elastic limit of |mag(L) - L0| (m); inf for none.
     drive : Drive or None
     integrator : str
-        One of :data:`springscene.integrators.NAMES`.
+        One of :data:`springscene.model.integrators.NAMES`.
     F_ext : (N, 3) float64 array or None
         A steady external force on each node (N); fixed nodes ignore it.
     grid : (nx, ny, nz) or None
@@ -322,7 +322,7 @@ def forces(s: System, pos: np.ndarray, t: float,
     """Net force without drag on every node (N, 3) at positions ``pos`` and time ``t``.
 
     Springs, gravity and the drive; drag ``-b p/m`` is left to the integrator
-    (see :mod:`springscene.integrators`). For one spring this is
+    (see :mod:`springscene.model.integrators`). For one spring this is
     ``(-k*(mag(L)-L0)) * (L/mag(L)) + m*g`` on the ball, the page's ``Fs + Fg``
     to the last bit. Fixed nodes get zero. ``flags`` = (plastic, stiffens) when the
     caller already knows them (the step loop does).

@@ -13,7 +13,7 @@
   the energy lost (the thermal energy tallied by the engine);
 - with a drive: the same over the steady state (the last half of the run).
 
-Theory comes from :mod:`springscene.theory`.
+Theory comes from :mod:`springscene.science.theory`.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Resonance: the steady-state amplitude against drive frequency, as one batch.
 
-All N drive frequencies run as one :class:`~springscene.physics.System` of N
+All N drive frequencies run as one :class:`~springscene.model.physics.System` of N
 independent holder-ball pairs side by side (copy c driven at ``omega[c]``), so
 the whole sweep is one numpy run through the same engine, not N Python loops.
 Every copy runs until the slowest drive has made ``periods`` periods (and the

@@ -1,9 +1,9 @@
 """The ball-and-spring model of matter drawn: atoms as sphere imposters, bonds as one object.
 
-A :class:`LatticeScene` is :class:`~springscene.scene.Scene`'s counterpart for a
-lattice config (:mod:`springscene.lattice`): the same off-screen plotter, VPython
+A :class:`LatticeScene` is :class:`~springscene.view.scene.Scene`'s counterpart for a
+lattice config (:mod:`springscene.model.lattice`): the same off-screen plotter, VPython
 lights and material, camera and autoscale, title, clock and read-back
-(:class:`~springscene.scene.SceneBase`), but thousands of objects instead of three,
+(:class:`~springscene.view.scene.SceneBase`), but thousands of objects instead of three,
 so each kind is one VTK object whose arrays are rewritten in place every frame:
 
 - the atoms: one point cloud drawn by ``vtkOpenGLSphereMapper`` (each point a
@@ -11,13 +11,13 @@ so each kind is one VTK object whose arrays are rewritten in place every frame:
   atom: ``[atom] color``, or through a colour map when ``[render] color_by`` is set;
   the held atoms gray and smaller (a crystal held at its outer layer shows its inside);
 - the bonds, by ``[bond] style``: ``helix``, every spring's helix tube in one mesh
-  (:class:`~springscene.geometry.HelixBatch`); ``cylinder``, one stick imposter per
+  (:class:`~springscene.view.geometry.HelixBatch`); ``cylinder``, one stick imposter per
   bond (``vtkOpenGLStickMapper``); ``line``, line cells on the atoms' own points;
-  ``auto``, helices up to :data:`springscene.lattice.HELIX_MAX_BONDS` bonds and
+  ``auto``, helices up to :data:`springscene.model.lattice.HELIX_MAX_BONDS` bonds and
   cylinders beyond.
 
 With ``color_by`` = ``displacement`` (|pos - site|) or ``speed`` (|p|/m) a colour bar
-is drawn into the frame. Its range is fixed for the whole video (:func:`color_range`
+is drawn into the frame. Its range is fixed for the whole video (:func:`springscene.render.lattice_color_range`
 runs a copy of the system over the video's frames first), so a colour means the
 same value in every frame.
 """

@@ -248,7 +248,7 @@ class EnergyPanel(_Panel):
         return (e.K, u, e.E_thermal, e.K + u + e.E_thermal)
 
     def draw(self, e) -> np.ndarray:
-        """The bars at :class:`~springscene.physics.Energies` ``e``: the RGBA pixels of
+        """The bars at :class:`~springscene.model.physics.Energies` ``e``: the RGBA pixels of
         :attr:`region`."""
         self._verts[:, 2:, 1] = np.array(self.values(e))[:, None] / self.scale
         self.bars.set_verts(self._verts)       # from 0 up to the value (down when negative)

@@ -56,7 +56,7 @@ def grab(render_window, width: int, height: int, buffer) -> np.ndarray:
 
 
 def apply_view(plotter, v: camera.View) -> None:
-    """Place a plotter's camera at a VPython :class:`~springscene.camera.View`."""
+    """Place a plotter's camera at a VPython :class:`~springscene.view.camera.View`."""
     cam = plotter.renderer.GetActiveCamera()
     cam.SetPosition(*v.position)
     cam.SetFocalPoint(*v.focal_point)

@@ -1,126 +1,16 @@
-"""springscene's ``vpython``: VPython 7's programming interface, drawn off-screen.
+"""VPython programs run headless: VPython's interface, drawn off-screen, to video and a page.
 
-``springscene vpython program.py --out video.mp4`` runs an unmodified VPython
-program with this package standing in for ``vpython`` (and ``visual``). The names
-are VPython's: ``vector``, ``sphere``, ``box``, ``helix``, ``scene``, ``rate``,
-``graph``, ``gcurve``, ``color`` and the rest; see :data:`__all__`.
+``springscene vpython program.py --out video.mp4`` runs an unmodified VPython 7, VPython 6
+or Web VPython program with :mod:`.api` standing in for ``vpython`` (and ``visual``). The
+package is in rooms, each importing only the rooms below it (a ``layers`` contract in
+``pyproject.toml``):
 
-Modules, each importing only those listed before it:
-
-- :mod:`.vector` (vectors), :mod:`.vmath` (the math names VPython re-exports),
-  :mod:`.runtime` (the program clock), :mod:`.widgets` (controls, with no user),
-  :mod:`.checks` (vector arguments, unsupported features);
-- :mod:`.canvas` (scene, camera, lights, colours);
-- the 3D objects as data: :mod:`.base` (what all share), :mod:`.curves` (curve,
-  points), :mod:`.objects` (``standardAttributes``, trails), :mod:`.solids` (sphere,
-  box, ...), :mod:`.labels` (label);
-- meshes and off-screen drawing: :mod:`.placement` (frames, placing copies),
-  :mod:`.shape_sizes` (VPython's size rules), :mod:`.shapes` (the meshes of each
-  kind), :mod:`.draw` (the renderer), then :mod:`.compounds` (compound, which
-  takes its parts' meshes, and the surface made once that extrusion and text share);
-- extrusions and 3D text: :mod:`.gears2d` and :mod:`.shapes2d` (the ``shapes`` and
-  ``paths`` libraries), :mod:`.extrusions` (extrusion), :mod:`.text3d` (text);
-- graphs: :mod:`.graph` (the graphs and plotted points), :mod:`.graph_layout` (one
-  graph on matplotlib axes), :mod:`.graph_images` (graphs as pictures);
-- :mod:`.page` (the page VPython would show) and :mod:`.runner` (a program to a
-  video).
+- :mod:`.run`: a program run, supervised in a child process, to its files;
+- :mod:`.page`: the film of frames, the page laid out as VPython's, graphs as pictures,
+  the HTML page;
+- :mod:`.draw`: the VTK renderer; :mod:`.dialects`: the names and source leniencies of
+  Web VPython and VPython 6;
+- :mod:`.api`: what ``from vpython import *`` gives a program (vectors, objects, canvases,
+  graphs, widgets, shapes and paths, textures);
+- :mod:`.geometry`: objects to numpy meshes; :mod:`.text`: fonts and text layout.
 """
-
-from __future__ import annotations
-
-from types import SimpleNamespace as _SimpleNamespace
-
-from . import attachments, vmath
-from .attachments import attach_arrow, attach_trail
-from .canvas import canvas, color, distant_light, local_light
-from .checks import UnsupportedError
-from .compounds import compound
-from .curves import curve, points
-from .extrusions import extrusion
-from .graph import gcurve, gdots, ghbars, graph, gvbars
-from .graph import reset as _reset_graphs
-from .graph_images import reset as _forget_graph_figures
-from .labels import label
-from .polygons import quad, triangle, vertex
-from .runtime import rate, sleep
-from .shapes2d import paths, shapes
-from .solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring, simple_sphere,
-                     sphere)
-from .text3d import text
-from .textures import bumpmaps, textures
-from .textures import reset as _reset_textures
-from .vector import (comp, cross, diff_angle, dot, hat, mag, mag2, norm, proj, rotate, vec,
-                     vector)
-from .vector_turns import adjust_axis, adjust_up, object_rotate
-from .widgets import button, checkbox, menu, radio, slider, winput, wtext
-from .widgets import reset as _reset_widgets
-from .widgets import skipped as _skipped
-
-globals().update(vmath.NAMES)
-
-version = ("7.6.5", "springscene")
-
-
-scene: canvas        # set by reset()
-GSversion = ["3.2", "glowscript"]
-
-
-def keysdown() -> list:
-    """No keyboard here: nothing is ever down."""
-    return []
-
-
-def get_library(url, *args, **kwargs) -> None:
-    """A JavaScript library from the web: nothing to load it into here; noted."""
-    _skipped(f"get_library({url!r}): a JavaScript library; not loaded (no browser)")
-
-
-def read_local_file(*args, **kwargs) -> _SimpleNamespace:
-    """A file the user picks (GlowScript gives its name, text, size, type and date): no
-    user here, so no file; an empty one is read (noted)."""
-    _skipped("read_local_file(): no user to pick a file; read an empty file")
-    return _SimpleNamespace(name="", text="", size=0, type="", date="")
-
-
-def set_browser(*args, **kwargs) -> None:
-    """Where VPython shows its page: springscene writes the page beside the video."""
-
-
-def attach_light(obj, offset=None, **options):
-    """A local light that follows ``obj`` (at ``obj.pos + offset``) at each render."""
-    return attachments.attach_light(obj, local_light, offset, options.pop("color", None),
-                                    **options)
-
-
-def reset() -> None:
-    """Forget every canvas, graph and control, and make a fresh default ``scene``."""
-    global scene
-    canvas._reset()
-    _reset_graphs()
-    _forget_graph_figures()
-    _reset_widgets()
-    attachments.reset()
-    _reset_textures()
-    scene = canvas()
-
-
-_OURS = ["vector", "vec", "mag", "mag2", "norm", "hat", "dot", "cross", "proj", "comp",
-         "diff_angle", "rotate", "adjust_up", "adjust_axis", "object_rotate",
-         "canvas", "scene", "color", "rate", "sleep",
-         "sphere", "simple_sphere", "box", "cylinder", "cone", "pyramid", "arrow", "helix",
-         "ring", "ellipsoid", "curve", "points", "label", "compound", "local_light",
-         "distant_light", "graph", "gcurve", "gdots", "gvbars", "ghbars",
-         "button", "slider", "menu", "checkbox", "radio", "winput", "wtext",
-         "vertex", "triangle", "quad", "textures", "bumpmaps", "paths", "shapes",
-         "extrusion", "text", "keysdown", "attach_arrow", "attach_trail", "attach_light",
-         "version", "GSversion", "get_library", "read_local_file", "set_browser"]
-__all__ = list(dict.fromkeys(_OURS + list(vmath.__all__)))
-
-reset()
-
-
-def __getattr__(name: str):
-    """A VPython name this package does not have fails with a message naming it."""
-    if name.startswith("__"):
-        raise AttributeError(name)
-    raise UnsupportedError(f"vpython.{name} is not supported by springscene's vpython")

@@ -17,10 +17,10 @@ import pytest
 
 from conftest import ROOT, run_cli
 from springscene.errors import ProgramError
-from springscene.vpython.runner import ProgramExit, run_program
-from springscene.vpython import supervise
-from springscene.vpython.supervise import RunEnded, run_supervised
-from springscene.vpython.supervise_report import parse_size
+from springscene.vpython.run.runner import ProgramExit, run_program
+from springscene.vpython.run import supervise
+from springscene.vpython.run.supervise import RunEnded, run_supervised
+from springscene.vpython.run.report import parse_size
 
 TINY = "from vpython import *\nscene.width = 64\nscene.height = 48\nb = sphere()\n"
 

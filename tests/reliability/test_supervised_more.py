@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, small_disk
-from springscene.vpython.supervise_report import Watch, stall_line
+from springscene.vpython.run.report import Watch, stall_line
 
 import test_supervised
 from test_supervised import program
@@ -318,7 +318,7 @@ def test_a_parent_dead_before_the_child_watched_it_is_caught(tmp_path):
     folder = tmp_path / ".x.mp4.123.abcdefgh.run"
     folder.mkdir()
     (folder / ".x.mp4.partial.mp4").write_bytes(b"partial")
-    code = ("import sys; from pathlib import Path; from springscene.vpython import lineage; "
+    code = ("import sys; from pathlib import Path; from springscene.vpython.run import lineage; "
             "lineage.die_with_parent(999999999, Path(sys.argv[1])); print('still here')")
     proc = subprocess.run([sys.executable, "-c", code, str(folder)], cwd=ROOT,
                           capture_output=True, text=True, timeout=60,
@@ -374,7 +374,7 @@ def test_no_frame_after_the_programs_end_says_the_video_is_being_finished():
 
 
 def test_a_capture_name_that_is_not_text_is_vpythons_type_error():
-    from springscene.vpython.canvas import capture_name
+    from springscene.vpython.api.canvases import capture_name
 
     with pytest.raises(TypeError, match="'filename' for Capture must be a string."):
         capture_name(3)

@@ -12,19 +12,19 @@ import textwrap
 import numpy as np
 import pytest
 
-import springscene.vpython
-from springscene.vpython import autoscale
-from springscene.vpython.canvas import canvas
-from springscene.vpython.draw import object_mesh
-from springscene.vpython.runner import run_program
+import springscene.vpython.api
+from springscene.vpython.draw import autoscale
+from springscene.vpython.api.canvases import canvas
+from springscene.vpython.geometry.object_meshes import object_mesh
+from springscene.vpython.run.runner import run_program
 
 C = 1 / math.tan(math.pi / 6)          # cot(fov/2), fov = pi/3
 
 
 @pytest.fixture
 def vp():
-    springscene.vpython.reset()
-    return springscene.vpython
+    springscene.vpython.api.reset()
+    return springscene.vpython.api
 
 
 def vpython_range(boxes, w=640, h=400):

@@ -12,14 +12,14 @@ import numpy as np
 import pytest
 
 from conftest import ROOT, run_cli
-from springscene import vpython as vp
-from springscene.vpython import dialects, visual6
-from springscene.vpython.runner import run_program
-from springscene.vpython.vector import vector
+from springscene.vpython import api as vp
+from springscene.vpython.dialects import compiling, visual6
+from springscene.vpython.run.runner import run_program
+from springscene.vpython.api.vectors import vector
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 # the module (the package's ``vector`` attribute is the class)
-vector_module = importlib.import_module("springscene.vpython.vector")
+vector_module = importlib.import_module("springscene.vpython.api.vectors")
 
 
 def write(tmp_path, source: str, name: str = "prog.py"):
@@ -43,19 +43,19 @@ def write(tmp_path, source: str, name: str = "prog.py"):
     ("x = 1", "vpython7", "VPython 7"),
 ])
 def test_detect(first, kind, name):
-    d = dialects.detect(f"\n{first}\nsphere()\n")
+    d = compiling.detect(f"\n{first}\nsphere()\n")
     assert (d.kind, d.name) == (kind, name)
 
 
 def test_vpython_import_wins_over_visual():
-    assert dialects.detect("from vpython import *\nimport visual\n").kind == "vpython7"
+    assert compiling.detect("from vpython import *\nimport visual\n").kind == "vpython7"
 
 
 def test_header_is_blanked_and_lines_keep_their_numbers():
     src = "GlowScript 3.2 VPython\nx = 1\ny = 2\n"
-    out = dialects.strip_header(src)
+    out = compiling.strip_header(src)
     assert out.splitlines() == ["", "x = 1", "y = 2"]
-    assert dialects.strip_header("x = 1\n") == "x = 1\n"
+    assert compiling.strip_header("x = 1\n") == "x = 1\n"
 
 
 # ---- GlowScript's leniencies -------------------------------------------------------------
@@ -65,18 +65,18 @@ def test_header_is_blanked_and_lines_keep_their_numbers():
     ("ok: ", True, "ok: true"), ("a", "b", "ab"), (2, 3, 5),
 ])
 def test_gs_add_joins_text_as_javascript(a, b, expected):
-    assert dialects.gs_add(a, b) == expected
+    assert compiling.gs_add(a, b) == expected
 
 
 def _run_transformed(src: str) -> dict:
-    tree = dialects.transform(ast.parse(textwrap.dedent(src)))
-    names = dict(dialects.HELPERS)
+    tree = compiling.transform(ast.parse(textwrap.dedent(src)))
+    names = dict(compiling.HELPERS)
     exec(compile(tree, "<t>", "exec"), names)
     return names
 
 
 def test_only_sums_with_text_are_rewritten():
-    tree = dialects.transform(ast.parse("a = b + c\nd = 'x' + e + f\n"))
+    tree = compiling.transform(ast.parse("a = b + c\nd = 'x' + e + f\n"))
     calls = [n for n in ast.walk(tree) if isinstance(n, ast.Call)]
     assert len(calls) == 2                    # ('x' + e) + f: both sums hold text
     plain = tree.body[0].value
@@ -294,8 +294,8 @@ def test_vpython6_controls_wait_for_no_one(tmp_path):
 
 
 def test_glowscript_list_append_of_several_items_is_a_push():
-    names = dict(dialects.HELPERS)
-    tree = dialects.transform(ast.parse("L = [1]\nL.append(2, 3)\nL.append(4)\n"))
+    names = dict(compiling.HELPERS)
+    tree = compiling.transform(ast.parse("L = [1]\nL.append(2, 3)\nL.append(4)\n"))
     exec(compile(tree, "<t>", "exec"), names)
     assert names["L"] == [1, 2, 3, 4]
 

@@ -23,8 +23,8 @@ import numpy as np
 import pytest
 
 from springscene.view import imagediff
-from springscene.vpython.materials import glow_factor
-from springscene.vpython.runner import run_program
+from springscene.vpython.draw.materials import glow_factor
+from springscene.vpython.run.runner import run_program
 
 REAL = Path(__file__).resolve().parents[1] / "baselines" / "emissive"
 

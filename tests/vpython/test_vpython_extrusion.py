@@ -11,16 +11,17 @@ import numpy as np
 import pytest
 import pyvista as pv
 
-from springscene.vpython.draw import Renderer, object_mesh
-from springscene.vpython.placement import vtk_cells
-from springscene.vpython.runner import run_program
+from springscene.vpython.draw.renderer import Renderer
+from springscene.vpython.geometry.object_meshes import object_mesh
+from springscene.vpython.geometry.placement import vtk_cells
+from springscene.vpython.run.runner import run_program
 
 PROGRAMS = Path(__file__).resolve().parents[1] / "vpython_programs"
 
 
 @pytest.fixture
 def vp():
-    import springscene.vpython as vp
+    import springscene.vpython.api as vp
 
     vp.reset()
     return vp

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from conftest import run_cli
-from springscene.vpython.runner import run_program
+from springscene.vpython.run.runner import run_program
 
 
 def write(tmp_path, source: str, name: str = "prog.py"):
@@ -120,7 +120,7 @@ def test_attach_trail_and_arrow_follow_at_each_render(tmp_path):
     img = iio.imread(tmp_path / "x.png").astype(int)
     cols = np.nonzero(green(img))[1]
     assert cols.min() < 320 - 150 and cols.max() > 320 + 150    # the trail from -4 to +4
-    from springscene.vpython.attachments import _arrows, _trails
+    from springscene.vpython.api.attachments import _arrows, _trails
     assert len(_trails) == 1 and 60 <= len(_trails[0]._trail._pts) <= 81
     assert _arrows[0].pos.x == pytest.approx(4.0) and _arrows[0].axis.y == 1.0
     bx, by = centre_of(blue(img))
@@ -155,7 +155,7 @@ def test_scene_objects_lists_no_trail_curve_as_vpython7_does(tmp_path):
     img = iio.imread(tmp_path / "x.png").astype(int)
     rows = np.nonzero(red(img))[0]
     assert rows.max() - rows.min() > 150          # the make_trail trail drawn, 0 to 6 up
-    from springscene.vpython.canvas import canvas
+    from springscene.vpython.api.canvases import canvas
     assert canvas._all[0]._autoscaled_range > 3   # range covers the trails (6 up, 6 down)
 
 

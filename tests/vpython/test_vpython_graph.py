@@ -18,10 +18,10 @@ import numpy as np
 import pytest
 
 # the package re-exports the class ``graph`` under the module's name: import the modules
-G = importlib.import_module("springscene.vpython.graph")
-GI = importlib.import_module("springscene.vpython.graph_images")   # graphs as pictures
-W = importlib.import_module("springscene.vpython.widgets")
-P = importlib.import_module("springscene.vpython.page")
+G = importlib.import_module("springscene.vpython.api.graphs")
+GI = importlib.import_module("springscene.vpython.page.graph_images")   # graphs as pictures
+W = importlib.import_module("springscene.vpython.api.widgets")
+P = importlib.import_module("springscene.vpython.page.html_page")
 
 
 class V:

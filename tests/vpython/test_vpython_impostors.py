@@ -1,4 +1,4 @@
-"""Small opaque spheres drawn as impostors (springscene.vpython.impostors): which spheres,
+"""Small opaque spheres drawn as impostors (springscene.vpython.draw.impostors): which spheres,
 their pictures against VPython's full 30-slice mesh (draft and anti-aliased, EGL and
 OSMesa), and what a hundred thousand of them cost."""
 
@@ -12,11 +12,11 @@ import textwrap
 import numpy as np
 import pytest
 
-import springscene.vpython as vp
-from springscene.vpython import draw, impostors
-from springscene.vpython.draw import Renderer
-from springscene.vpython.impostors import SphereBatch
-from springscene.vpython.instanced import InstancedBatch
+import springscene.vpython.api as vp
+from springscene.vpython.draw import renderer, impostors
+from springscene.vpython.draw.renderer import Renderer
+from springscene.vpython.draw.impostors import SphereBatch
+from springscene.vpython.draw.instanced import InstancedBatch
 
 from conftest import require_backend
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
@@ -47,7 +47,7 @@ def _cloud(n: int, radius: float, seed: int = 1) -> None:
 
 def _picture(antialias: bool, full: bool = False, backend_name: str = "auto"):
     if full:
-        with draw.full_detail():
+        with renderer.full_detail():
             return _picture(antialias, backend_name=backend_name)
     r = Renderer(vp.scene, antialias=antialias, backend_name=backend_name)
     r.frame()
@@ -178,7 +178,7 @@ def test_hidden_and_transparent_spheres():
     a.opacity = 0.5
     r.frame()
     kinds = {(k[0], k[1]): type(bb) for k, bb in r._batches.items()}
-    assert kinds == {("sphere", 0.5): draw._Batch}
+    assert kinds == {("sphere", 0.5): renderer._Batch}
     r.close()
 
 
@@ -189,8 +189,8 @@ def test_impostors_on_each_backend(backend_name, tmp_path):
     prog = textwrap.dedent(f"""\
         import sys
         import numpy as np
-        import springscene.vpython as vp
-        from springscene.vpython.draw import Renderer
+        import springscene.vpython.api as vp
+        from springscene.vpython.draw.renderer import Renderer
         rng = np.random.default_rng(1)
         vp.scene.width, vp.scene.height = 480, 320
         for p, c in zip(rng.random((300, 3)) * 10, rng.random((300, 3))):
@@ -217,14 +217,14 @@ def test_impostors_on_each_backend(backend_name, tmp_path):
 MEMORY_PROGRAM = textwrap.dedent("""\
     import json, sys
     import numpy as np
-    import springscene.vpython as vp
-    from springscene.vpython import draw
-    from springscene.vpython.draw import Renderer
+    import springscene.vpython.api as vp
+    from springscene.vpython.draw import renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     def rss():
         return int(open("/proc/self/statm").read().split()[1]) * 4096
 
-    n, antialias, draw.IMPOSTORS = int(sys.argv[1]), sys.argv[2] == "aa", sys.argv[3] == "1"
+    n, antialias, renderer.IMPOSTORS = int(sys.argv[1]), sys.argv[2] == "aa", sys.argv[3] == "1"
     vp.reset()
     r = Renderer(vp.scene, antialias=antialias)
     r.frame()

@@ -1,5 +1,5 @@
 """Template objects (spheres, boxes, cylinders, cones, pyramids) drawn as instances of one
-unit mesh (springscene.vpython.instanced): the same pictures as placing every vertex, a
+unit mesh (springscene.vpython.draw.instanced): the same pictures as placing every vertex, a
 few hundred bytes an object, and a level of detail from the first frame on."""
 
 from __future__ import annotations
@@ -9,10 +9,11 @@ import math
 import numpy as np
 import pytest
 
-import springscene.vpython as vp
-from springscene.vpython import draw, placement
-from springscene.vpython.draw import Renderer
-from springscene.vpython.instanced import InstancedBatch, quaternions
+import springscene.vpython.api as vp
+from springscene.vpython.draw import renderer
+from springscene.vpython.geometry import placement
+from springscene.vpython.draw.renderer import Renderer
+from springscene.vpython.draw.instanced import InstancedBatch, quaternions
 
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
 
@@ -21,7 +22,7 @@ from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
 def fresh(monkeypatch):
     """A fresh scene, its spheres all meshes: small ones are impostors otherwise
     (test_vpython_impostors.py)."""
-    monkeypatch.setattr(draw, "IMPOSTORS", False)
+    monkeypatch.setattr(renderer, "IMPOSTORS", False)
     vp.reset()
     yield
     vp.reset()
@@ -73,7 +74,7 @@ def test_instances_draw_the_placed_meshes_picture(antialias, monkeypatch):
     """The same scene with every vertex placed in numpy and with instancing: within the
     image tolerance (the GPU places the same triangles in single precision)."""
     def picture(instancing: bool):
-        monkeypatch.setattr(draw, "INSTANCING", instancing)
+        monkeypatch.setattr(renderer, "INSTANCING", instancing)
         vp.reset()
         _scene()
         r = Renderer(vp.scene, antialias=antialias)

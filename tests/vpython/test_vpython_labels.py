@@ -16,10 +16,11 @@ import numpy as np
 import pytest
 from PIL import Image
 
-import springscene.vpython
+import springscene.vpython.api
 from springscene.view import camera
-from springscene.vpython import label_draw, label_fonts, label_layout
-from springscene.vpython.draw import Renderer
+from springscene.vpython.draw import label_overlay
+from springscene.vpython.text import fonts, label_layout
+from springscene.vpython.draw.renderer import Renderer
 
 BASELINES = Path(__file__).resolve().parents[1] / "baselines" / "labels"
 
@@ -98,19 +99,19 @@ def test_parse_keeps_glowscript_quirks():
 # ---- fonts: what headless Chromium draws with -----------------------------------------------
 
 def test_fonts_are_the_browsers_and_widths_are_its_measure_text():
-    assert Path(label_fonts.font_file("Arial")).name == "LiberationSans-Regular.ttf"
-    assert Path(label_fonts.font_file("Georgia", True, True)).name == \
+    assert Path(fonts.font_file("Arial")).name == "LiberationSans-Regular.ttf"
+    assert Path(fonts.font_file("Georgia", True, True)).name == \
         "LiberationSerif-BoldItalic.ttf"
-    assert Path(label_fonts.font_file("monospace")).name == "DejaVuSansMono.ttf"
+    assert Path(fonts.font_file("monospace")).name == "DejaVuSansMono.ttf"
     # Liberation Sans advances (units of 2048 per em): C 1479, e 1139, n 1139, t 569, r 682,
     # space 569, b 1139, o 1139, x 1024, H 1479, g 1139
     units = 1479 + 1139 + 1139 + 569 + 1139 + 682 + 569 + 1139 + 1139 + 1024 + 569 + 1479 + 1139
-    assert label_fonts.width("Center box Hg", "Arial", 15) == pytest.approx(units * 15 / 2048,
+    assert fonts.width("Center box Hg", "Arial", 15) == pytest.approx(units * 15 / 2048,
                                                                             abs=0.02)
-    assert label_fonts.width("Mono font", "monospace", 15) == pytest.approx(9 * 1233 * 15 / 2048,
+    assert fonts.width("Mono font", "monospace", 15) == pytest.approx(9 * 1233 * 15 / 2048,
                                                                             abs=0.02)
     # textBaseline 'middle' of Liberation Sans: typo ascender 1491, descender -431
-    assert label_fonts.middle(label_fonts.font_file("Arial")) == pytest.approx(
+    assert fonts.middle(fonts.font_file("Arial")) == pytest.approx(
         (1491 - 431) / (2 * (1491 + 431)))
 
 
@@ -118,40 +119,40 @@ def test_fonts_are_the_browsers_and_widths_are_its_measure_text():
 
 @pytest.fixture
 def vp():
-    springscene.vpython.reset()
-    return springscene.vpython
+    springscene.vpython.api.reset()
+    return springscene.vpython.api
 
 
 def test_default_colours_follow_glowscripts_rule(vp):
     lab = vp.label(text="a", pixel_pos=True, pos=vp.vec(100, 100, 0))
-    s = label_draw.spec(lab, None, 640, 400, (0.0, 0.0, 0.0))
+    s = label_overlay.spec(lab, None, 640, 400, (0.0, 0.0, 0.0))
     assert s.text_rgb == s.line_rgb == (255, 255, 255) and s.fill_rgba == (0, 0, 0, 0.66)
-    s = label_draw.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))     # exactly white: black
+    s = label_overlay.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))     # exactly white: black
     assert s.text_rgb == (0, 0, 0) and s.fill_rgba[:3] == (255, 255, 255)
-    s = label_draw.spec(lab, None, 640, 400, (0.5, 0.5, 0.5))
+    s = label_overlay.spec(lab, None, 640, 400, (0.5, 0.5, 0.5))
     assert s.text_rgb == (255, 255, 255) and s.fill_rgba[:3] == (127, 127, 127)
     lab.color, lab.background, lab.opacity = vp.color.red, vp.color.blue, 0.25
-    s = label_draw.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))
+    s = label_overlay.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))
     assert s.text_rgb == s.line_rgb == (255, 0, 0) and s.fill_rgba == (0, 0, 255, 0.25)
     lab.linecolor, lab.linewidth = vp.color.green, 3
-    s = label_draw.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))
+    s = label_overlay.spec(lab, None, 640, 400, (1.0, 1.0, 1.0))
     assert s.line_rgb == (0, 255, 0) and s.linewidth == 3
 
 
 def test_pixel_pos_counts_from_the_bottom_and_its_yoffset_points_down(vp):
     lab = vp.label(text="ab", pixel_pos=True, pos=vp.vec(100, 50, 0), yoffset=30)
-    g = label_draw.spec(lab, None, 640, 400, (0.0, 0.0, 0.0)).geometry
+    g = label_overlay.spec(lab, None, 640, 400, (0.0, 0.0, 0.0)).geometry
     assert g.line == pytest.approx((100, 350, 100, 380))        # GlowScript negates yoffset
 
 
 def test_3d_pos_is_projected_and_rounded_and_hidden_behind_the_camera(vp):
     view = camera.view((0, 0, 0), (0, 0, -1), (0, 1, 0), math.pi / 3, 2.0, 640, 400)
     lab = vp.label(text="ab", pos=vp.vec(1, 0.5, 0))
-    g = label_draw.spec(lab, view, 640, 400, (0.0, 0.0, 0.0)).geometry
-    assert g.runs[0].y == 150 and g.runs[0].x + label_fonts.width("ab", "Arial", 15) / 2 == \
+    g = label_overlay.spec(lab, view, 640, 400, (0.0, 0.0, 0.0)).geometry
+    assert g.runs[0].y == 150 and g.runs[0].x + fonts.width("ab", "Arial", 15) / 2 == \
         pytest.approx(420)                                       # 100 px per unit at range 2
     lab.pos = vp.vec(0, 0, 10)                                  # behind the camera
-    assert label_draw.spec(lab, view, 640, 400, (0.0, 0.0, 0.0)) is None
+    assert label_overlay.spec(lab, view, 640, 400, (0.0, 0.0, 0.0)) is None
 
 
 # ---- rasterising ----------------------------------------------------------------------------
@@ -159,11 +160,11 @@ def test_3d_pos_is_projected_and_rounded_and_hidden_behind_the_camera(vp):
 def test_rectangles_have_exact_area_coverage():
     img = np.zeros((20, 20, 3), np.uint8)
     geo = label_layout.Geometry((2.25, 3.5, 10.5, 6.0), None, (), "Arial")
-    out = label_draw.composite(img, [label_draw.Spec(geo, (0, 0, 0), (255, 255, 255),
+    out = label_overlay.composite(img, [label_overlay.Spec(geo, (0, 0, 0), (255, 255, 255),
                                                      (255, 255, 255, 1.0), 1.0, False)])
     assert out[..., 0].sum() / 255 == pytest.approx(10.5 * 6.0, abs=0.1)
     assert out[5, 2, 0] == 191 and out[5, 3, 0] == 255 and out[3, 5, 0] == 128
-    r0, c0, ring = label_draw._box_cover((20, 20, 3), 2.5, 2.5, 10, 6, 1.0)   # 1 px wide outline
+    r0, c0, ring = label_overlay._box_cover((20, 20, 3), 2.5, 2.5, 10, 6, 1.0)   # 1 px wide outline
     assert (r0, c0) == (2, 2) and ring.sum() == pytest.approx(11 * 7 - 9 * 5)
     assert ring[1:6, 0].tolist() == [1.0] * 5 and ring[2, 2] == 0.0
 

@@ -16,14 +16,15 @@ import math
 import numpy as np
 import pytest
 
-import springscene.vpython as vp
+import springscene.vpython.api as vp
 from springscene import jobs
 from springscene.app import cli
 from springscene.errors import UserError
 from springscene.view import camera
 from springscene.view.geometry import HelixTube
-from springscene.vpython import draw, helix_batch, placement
-from springscene.vpython.draw import Renderer
+from springscene.vpython.draw import renderer
+from springscene.vpython.geometry import helices, object_meshes, placement
+from springscene.vpython.draw.renderer import Renderer
 
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
 
@@ -47,7 +48,7 @@ def test_full_detail_batch_is_each_helix_tube():
     """Three helices (two of one shape) in one mesh: each is HelixTube's tube, VPython's
     60 chords a coil and 16 sides, vertex for vertex."""
     hs = _helices()
-    points, normals, tris, rgb, bounds, sig = helix_batch.mesh(hs)
+    points, normals, tris, rgb, bounds, sig = helices.mesh(hs)
     assert sorted(g[:4] for g in sig) == [(2.5, False, 60, 16), (7.0, True, 60, 16)]
     got = {}
     start = 0
@@ -71,27 +72,27 @@ def test_full_detail_batch_is_each_helix_tube():
 
 def test_default_wire_is_a_twentieth_of_the_radius():
     h = vp.helix(radius=0.4, axis=vp.vector(2, 0, 0))
-    a = helix_batch.helix_arrays([h])
+    a = helices.helix_arrays([h])
     assert a["wire"][0] == pytest.approx(0.02)           # size.y / 40
     h.thickness = 0.1
-    assert helix_batch.helix_arrays([h])["wire"][0] == pytest.approx(0.05)
+    assert helices.helix_arrays([h])["wire"][0] == pytest.approx(0.05)
 
 
 def test_zero_length_helix_is_not_drawn():
     h = vp.helix(axis=vp.vector(0, 0, 0))
-    assert helix_batch.mesh([h]) is None
-    assert len(helix_batch.mesh([h, vp.helix()])[0]) == (5 * 60 + 1) * 16
+    assert helices.mesh([h]) is None
+    assert len(helices.mesh([h, vp.helix()])[0]) == (5 * 60 + 1) * 16
 
 
 @pytest.mark.parametrize("radius_px, full", [(1000.0, True), (10.0, False), (2.0, False)])
 def test_steps_keep_the_sagitta_under_the_tolerance(radius_px, full):
-    n = helix_batch.steps_for(radius_px, helix_batch.CHORD_STEPS)
+    n = helices.steps_for(radius_px, helices.CHORD_STEPS)
     assert (n == 60) == full
     if not full:
-        assert radius_px * (1 - math.cos(math.pi / n)) <= helix_batch.LOD_PX
-        finer = helix_batch.CHORD_STEPS[helix_batch.CHORD_STEPS.index(n) - 1]
-        assert n == helix_batch.CHORD_STEPS[-1] or \
-            radius_px * (1 - math.cos(math.pi / finer)) <= helix_batch.LOD_PX
+        assert radius_px * (1 - math.cos(math.pi / n)) <= helices.LOD_PX
+        finer = helices.CHORD_STEPS[helices.CHORD_STEPS.index(n) - 1]
+        assert n == helices.CHORD_STEPS[-1] or \
+            radius_px * (1 - math.cos(math.pi / finer)) <= helices.LOD_PX
 
 
 def _view(rng: float, w=900, h=600):
@@ -104,11 +105,11 @@ def test_detail_follows_the_size_on_screen():
     the nearer, the finer; close up VPython's full 60 x 16."""
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
                  thickness=0.05)
-    sig = [helix_batch.mesh([h], _view(rng))[5][0][2:4] for rng in (0.3, 15.0, 300.0)]
+    sig = [helices.mesh([h], _view(rng))[5][0][2:4] for rng in (0.3, 15.0, 300.0)]
     assert sig[0] == (60, 16)
     assert sig[1][0] < 60 and sig[1][1] < 16
     assert sig[2][0] <= sig[1][0] and sig[2][1] <= sig[1][1]
-    assert sig[2] == (helix_batch.CHORD_STEPS[-1], helix_batch.SIDE_STEPS[-1])
+    assert sig[2] == (helices.CHORD_STEPS[-1], helices.SIDE_STEPS[-1])
 
 
 def test_lod_mesh_stays_near_the_full_one():
@@ -117,8 +118,8 @@ def test_lod_mesh_stays_near_the_full_one():
     still hold the full-detail mesh."""
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0.1, 0), radius=0.15,
                  thickness=0.05)
-    full = helix_batch.mesh([h])
-    lod = helix_batch.mesh([h], _view(15.0))
+    full = helices.mesh([h])
+    lod = helices.mesh([h], _view(15.0))
     assert len(lod[0]) < len(full[0]) / 2
     centre = full[0].reshape(-1, 16, 3).mean(axis=1)
     d = np.linalg.norm(lod[0][:, None] - centre[None], axis=2).min(axis=1)
@@ -149,7 +150,7 @@ def test_renderer_draws_a_lattice_of_helices_in_one_batch():
 
     lod, detail = lattice_picture()
     assert detail != (60, 16)
-    with draw.full_detail():
+    with renderer.full_detail():
         full, full_detail = lattice_picture()
     assert full_detail == (60, 16)
     bad, mean = compare(lod, full)
@@ -171,7 +172,7 @@ def test_zooming_in_redraws_unchanged_objects_in_more_detail():
     r.frame()
     near = {k[0]: b.signature for k, b in r._batches.items()}
     r.close()
-    assert far["sphere"][1][1] < near["sphere"][1][1] == draw.SPHERE_STEPS[0]
+    assert far["sphere"][1][1] < near["sphere"][1][1] == renderer.SPHERE_STEPS[0]
     assert far["helix"][1][2:4] < near["helix"][1][2:4] == (60, 16)
 
 
@@ -185,11 +186,11 @@ def _outward(points, normals, tris) -> np.ndarray:
 def test_helix_and_sphere_triangles_face_out():
     """Back faces are culled on them: every triangle must be counter-clockwise from outside."""
     for view in (None, _view(3.0)):
-        points, normals, tris, *_ = helix_batch.mesh(_helices(), view, triangles=True) \
-            if view is None else helix_batch.mesh(_helices()[:1], view)
+        points, normals, tris, *_ = helices.mesh(_helices(), view, triangles=True) \
+            if view is None else helices.mesh(_helices()[:1], view)
         assert np.all(_outward(points, normals, tris) > 0)
     for slices in (30, 10):
-        t = draw.template("sphere", slices)
+        t = object_meshes.template("sphere", slices)
         ok = _outward(t.points, t.normals, t.triangles)
         area = np.linalg.norm(np.cross(t.points[t.triangles[:, 1]] - t.points[t.triangles[:, 0]],
                                        t.points[t.triangles[:, 2]] - t.points[t.triangles[:, 0]]),
@@ -217,7 +218,7 @@ def test_back_faces_culled_only_when_hidden():
     spring.pos = vp.vector(1, 0, 0.01)
     r.frame()
     helix = [b for k, b in r._batches.items() if k[0] == "helix"][0]
-    assert helix.signature[1][2] < helix_batch.CHORDS_PER_COIL
+    assert helix.signature[1][2] < helices.CHORDS_PER_COIL
     assert helix.actor.GetProperty().GetBackfaceCulling() == 1
     vp.scene.range = 3
     ball.radius = 100                                     # the camera is now inside it
@@ -228,7 +229,7 @@ def test_back_faces_culled_only_when_hidden():
     assert sphere.actor.GetProperty().GetBackfaceCulling() == 0
     r.close()
     style = {"opacity": 0.5}
-    helix_batch.cull_back_faces(sphere, style)           # actor gone: nothing to do
+    helices.cull_back_faces(sphere, style)           # actor gone: nothing to do
 
 
 def test_wire_sides_take_a_share_of_the_tolerance():
@@ -237,17 +238,17 @@ def test_wire_sides_take_a_share_of_the_tolerance():
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
                  thickness=0.05)
     view = _view(15.0)
-    a = helix_batch.helix_arrays([h])
-    chords, sides = helix_batch.detail(a, np.array([0]), view)
-    ppu = helix_batch.pixels_per_unit(view, np.array([[0.2, 0, 0]]), 0.175)[0]
+    a = helices.helix_arrays([h])
+    chords, sides = helices.detail(a, np.array([0]), view)
+    ppu = helices.pixels_per_unit(view, np.array([[0.2, 0, 0]]), 0.175)[0]
     wire_px, coil_px = 0.025 * ppu, 0.15 * ppu
-    tol = helix_batch.LOD_PX * helix_batch.SIDE_SHARE
-    assert helix_batch.SIDE_SHARE < 1
+    tol = helices.LOD_PX * helices.SIDE_SHARE
+    assert helices.SIDE_SHARE < 1
     assert wire_px * (1 - math.cos(math.pi / sides)) <= tol
-    coarser = helix_batch.SIDE_STEPS[helix_batch.SIDE_STEPS.index(sides) + 1]
+    coarser = helices.SIDE_STEPS[helices.SIDE_STEPS.index(sides) + 1]
     assert wire_px * (1 - math.cos(math.pi / coarser)) > tol
-    assert (chords, sides) == (helix_batch.steps_for(coil_px, helix_batch.CHORD_STEPS),
-                               helix_batch.steps_for(wire_px, helix_batch.SIDE_STEPS, tol))
+    assert (chords, sides) == (helices.steps_for(coil_px, helices.CHORD_STEPS),
+                               helices.steps_for(wire_px, helices.SIDE_STEPS, tol))
 
 
 def _lattice(n: int) -> list:
@@ -291,7 +292,7 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, mo
 
     def picture(full: bool):
         return _lattice_picture(size, antialias,
-                                draw.full_detail() if full else contextlib.nullcontext())
+                                renderer.full_detail() if full else contextlib.nullcontext())
 
     full, _ = picture(full=True)
     lod, sig = picture(full=False)
@@ -299,7 +300,7 @@ def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, mo
     bad, mean = compare(lod, full)
     assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (bad, mean, sig)
     if not antialias:
-        monkeypatch.setattr(helix_batch, "LOD_PX", 0.3)   # a looser sagitta: outside it
+        monkeypatch.setattr(helices, "LOD_PX", 0.3)   # a looser sagitta: outside it
         coarse, sig = picture(full=False)
         assert sig[1][2:4] < (60, 16) and compare(coarse, full)[0] > MAX_BAD_FRACTION
 
@@ -333,13 +334,13 @@ COARSE_MEAN_DIFF = 1.5
 
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
-    """``springscene vpython --lod 0.3`` (:func:`draw.coarser_detail`): AtomicSolid-like
+    """``springscene vpython --lod 0.3`` (:func:`renderer.coarser_detail`): AtomicSolid-like
     springs with fewer chords and sides, anti-aliased too, the picture within the stated
     bound of full detail but outside the image tolerance; the detail restored after."""
 
     def picture(full: bool = False, px: float | None = None):
         return _lattice_picture((450, 300), antialias,
-                                draw.full_detail() if full else draw.coarser_detail(px))
+                                renderer.full_detail() if full else renderer.coarser_detail(px))
 
     full, _ = picture(full=True)
     coarse, sig = picture(px=0.3)
@@ -347,8 +348,8 @@ def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
     assert chords < 60 and sides < 16
     bad, mean = compare(coarse, full)
     assert MAX_BAD_FRACTION < bad <= COARSE_BAD_FRACTION and mean <= COARSE_MEAN_DIFF
-    assert (helix_batch.LOD_PX, helix_batch.SIDE_SHARE) == (0.03, 0.5)      # restored
-    assert draw.FULL_HELICES_ANTIALIASED
+    assert (helices.LOD_PX, helices.SIDE_SHARE) == (0.03, 0.5)      # restored
+    assert renderer.FULL_HELICES_ANTIALIASED
     _, default_sig = picture()
     if antialias:
         assert default_sig[1][2:4] == (60, 16)

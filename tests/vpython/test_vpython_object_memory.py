@@ -2,7 +2,7 @@
 
 ``standard`` keeps VPython's scalar defaults at class level, and an object's vectors at
 their default point to one read-only vector its class shares
-(:mod:`springscene.vpython.shared_defaults`); a program reading a vector (``ball.axis``)
+(:mod:`springscene.vpython.api.shared_defaults`); a program reading a vector (``ball.axis``)
 gets the object's own copy then, so ``ball.axis.x = 2`` changes that object alone. The
 bytes are measured with tracemalloc in a fresh interpreter (a class's objects share one
 key table, which other tests' objects would have grown)."""
@@ -22,12 +22,13 @@ import math
 
 import numpy as np
 
-import springscene.vpython as vpython_module
-from springscene.vpython import frames, impostors, shared_defaults
-from springscene.vpython.draw import Renderer
-from springscene.vpython.objects import standard
-from springscene.vpython.shared_defaults import Default
-from springscene.vpython.vector import vector
+import springscene.vpython.api as vpython_module
+from springscene.vpython.api import frames, shared_defaults
+from springscene.vpython.draw import impostors
+from springscene.vpython.draw.renderer import Renderer
+from springscene.vpython.api.objects import standard
+from springscene.vpython.api.shared_defaults import Default
+from springscene.vpython.api.vectors import vector
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -39,7 +40,7 @@ BOUNDS = {"sphere": 260, "box": 260, "helix": 260, "bare sphere": 165}
 
 MEASURE = textwrap.dedent("""\
     import gc, json, sys, tracemalloc
-    from springscene.vpython import box, color, helix, sphere, vector
+    from springscene.vpython.api import box, color, helix, sphere, vector
     MAKE = {
         "sphere": lambda i: sphere(pos=vector(i, 0, 0), radius=0.3, color=color.red),
         "box": lambda i: box(pos=vector(i, 0, 0), size=vector(1, 2, 3), color=color.red),
@@ -369,7 +370,7 @@ PROGRAMS = {
 }
 PEAK = textwrap.dedent("""\
     import sys
-    from springscene.vpython.runner import run_program
+    from springscene.vpython.run.runner import run_program
     run_program(sys.argv[1], sys.argv[2])
     print([int(line.split()[1]) for line in open("/proc/self/status")
            if line.startswith("VmHWM:")][0])

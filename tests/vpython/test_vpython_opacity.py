@@ -16,9 +16,9 @@ import numpy as np
 import pytest
 from skimage.color import deltaE_ciede2000, rgb2lab
 
-import springscene.vpython as vpmod
+import springscene.vpython.api as vpmod
 from springscene.view.scene import MULTI_SAMPLES
-from springscene.vpython.draw import Renderer
+from springscene.vpython.draw.renderer import Renderer
 
 REAL = Path(__file__).resolve().parents[1] / "baselines" / "opacity"
 

@@ -14,8 +14,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import springscene.vpython as vpython_module
-from springscene.vpython.draw import Renderer
+import springscene.vpython.api as vpython_module
+from springscene.vpython.draw.renderer import Renderer
 
 # (axis, up) given -> (axis, up) VPython 7.6.5 ends with (its vector.py adjust_up/adjust_axis)
 CASES = [

@@ -14,8 +14,8 @@ import textwrap
 import imageio.v3 as iio
 import numpy as np
 
-from springscene.vpython import html_text
-from springscene.vpython.runner import run_program
+from springscene.vpython.text import html_text
+from springscene.vpython.run.runner import run_program
 
 BG = (241, 242, 244)
 

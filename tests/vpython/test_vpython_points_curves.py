@@ -8,15 +8,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-import springscene.vpython
-from springscene.vpython import point_draw
-from springscene.vpython.draw import Renderer
+import springscene.vpython.api
+from springscene.vpython.geometry import point_meshes
+from springscene.vpython.draw.renderer import Renderer
 
 
 @pytest.fixture
 def vp():
-    springscene.vpython.reset()
-    return springscene.vpython
+    springscene.vpython.api.reset()
+    return springscene.vpython.api
 
 
 def frame_of(vp):
@@ -39,10 +39,10 @@ def extent(img: np.ndarray, row: int, col: int, reach: int = 20) -> tuple[int, i
 
 def test_sizes_follow_vpython_rule():
     # s = 2 range / width; radius 0: 20 s; radius r: 2 s r; curve: 4 range / width
-    assert point_draw.point_diameters(np.array([0.0, 8.0]), 10.0, 640) == \
+    assert point_meshes.point_diameters(np.array([0.0, 8.0]), 10.0, 640) == \
         pytest.approx([20 * 20 / 640, 2 * 20 / 640 * 8])
-    assert point_draw.thin_radius(10.0, 640) == pytest.approx(40 / 640)
-    assert point_draw.thin_radii(np.array([0.0, 0.3]), 10.0, 640) == \
+    assert point_meshes.thin_radius(10.0, 640) == pytest.approx(40 / 640)
+    assert point_meshes.thin_radii(np.array([0.0, 0.3]), 10.0, 640) == \
         pytest.approx([40 / 640, 0.3])
 
 

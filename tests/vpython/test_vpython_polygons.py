@@ -8,14 +8,14 @@ import numpy as np
 import pytest
 
 from conftest import ROOT
-from springscene.vpython.runner import run_program
+from springscene.vpython.run.runner import run_program
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 
 
 @pytest.fixture
 def vp():
-    import springscene.vpython as vp
+    import springscene.vpython.api as vp
 
     vp.reset()
     vp.scene.width, vp.scene.height = 300, 300
@@ -25,7 +25,7 @@ def vp():
 
 @pytest.fixture
 def renderer(vp):
-    from springscene.vpython.draw import Renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     r = Renderer(vp.scene, antialias=False)
     yield r

@@ -16,8 +16,8 @@ from imagecompare import check, compare
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF
 from springscene import config, render
 from springscene.view import camera
-from springscene.vpython import runtime
-from springscene.vpython.runner import run_program
+from springscene.vpython.api import runtime
+from springscene.vpython.run.runner import run_program
 
 EXAMPLES = ROOT / "examples"
 VP_BASELINES = BASELINES / "vpython"
@@ -30,7 +30,7 @@ def write(tmp_path, source: str, name: str = "prog.py"):
 
 
 def ball_of(cv_index: int = 0):
-    from springscene.vpython.canvas import canvas
+    from springscene.vpython.api.canvases import canvas
 
     return next(o for o in canvas._all[cv_index]._objects if o._kind == "sphere")
 
@@ -197,7 +197,7 @@ def test_a_program_that_ends_ends_the_video(tmp_path):
 
 @pytest.fixture
 def vp():
-    import springscene.vpython as vp
+    import springscene.vpython.api as vp
 
     vp.reset()
     return vp
@@ -295,10 +295,10 @@ def test_canvas_defaults_and_camera(vp):
 
 def test_a_thousand_spheres_are_one_batch_updated_in_place(vp):
     """A thousand small spheres: one actor holding a centre, radius and colour each
-    (impostors, :mod:`springscene.vpython.impostors`: they are a few pixels across),
+    (impostors, :mod:`springscene.vpython.draw.impostors`: they are a few pixels across),
     rewritten in place when they move."""
-    from springscene.vpython.draw import Renderer
-    from springscene.vpython.impostors import EQUAL_AREA
+    from springscene.vpython.draw.renderer import Renderer
+    from springscene.vpython.draw.impostors import EQUAL_AREA
 
     balls = [vp.sphere(pos=vp.vector(i % 10, i // 10 % 10, i // 100), radius=0.15,
                        color=vp.color.red) for i in range(1000)]
@@ -327,7 +327,7 @@ def test_a_thousand_spheres_are_one_batch_updated_in_place(vp):
 
 
 def test_autoscale_and_projection_put_objects_where_vpython_does(vp):
-    from springscene.vpython.draw import Renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     vp.scene.background = vp.color.white
     vp.sphere(pos=vp.vector(2, 1, 0), radius=0.1, color=vp.color.red)   # small: a dot
@@ -430,7 +430,7 @@ def test_example_stills(tmp_path, regen, name, duration):
 # ---- what the review found ---------------------------------------------------------------
 
 def test_compound_keeps_its_parts_size_and_turns_without_resizing(vp):
-    from springscene.vpython.draw import object_mesh
+    from springscene.vpython.geometry.object_meshes import object_mesh
 
     c = vp.compound([vp.box(size=vp.vector(2, 0.3, 0.3)),
                      vp.sphere(pos=vp.vector(1, 0, 0), radius=0.3)])
@@ -466,7 +466,7 @@ def test_trail_off_and_on_starts_a_new_trail(vp):
 
 
 def test_no_lights_is_ambient_only_and_ambient_changes_show(vp):
-    from springscene.vpython.draw import Renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     vp.scene.lights = []
     vp.box(size=vp.vector(4, 4, 0.1), color=vp.color.red)
@@ -480,7 +480,7 @@ def test_no_lights_is_ambient_only_and_ambient_changes_show(vp):
 
 
 def test_cleared_and_deleted_objects_leave_the_picture(vp):
-    from springscene.vpython.draw import Renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     vp.scene.background = vp.color.white
     c = vp.curve(vp.vector(-1, 0, 0), vp.vector(1, 0, 0), color=vp.color.red, radius=0.1)

@@ -1,5 +1,5 @@
 """GlowScript's lighting rules are edits of VTK's own generated fragment shader
-(:mod:`springscene.vpython.materials`, :mod:`springscene.vpython.texture_shading`). A
+(:mod:`springscene.vpython.draw.materials`, :mod:`springscene.vpython.draw.texture_shading`). A
 replacement whose original text is no longer in VTK's shader (another VTK release)
 does nothing and says nothing; these tests read the shader VTK compiled and check that
 every rule took: its original text gone, its replacement there."""
@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from springscene.view import backend
-from springscene.vpython import materials
+from springscene.vpython.draw import materials
 
 
 def compiled_fragment_shader(setup, positional: bool = False) -> str:

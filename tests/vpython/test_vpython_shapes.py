@@ -4,14 +4,16 @@ import numpy as np
 import pytest
 
 from springscene.view.geometry import HelixFrame
-from springscene.vpython import placement, shape_sizes, shapes
+from springscene.vpython.geometry import placement
+import springscene.vpython.api as vp
+from springscene.vpython.geometry import meshes
 
 UNIT_KINDS = {            # kind: (template, points, triangles, centred)
-    "sphere": (shapes.sphere, 842, 1680, True),
-    "box": (shapes.box, 24, 12, True),
-    "cylinder": (shapes.cylinder, 4 * 50 + 2, 4 * 50, False),
-    "cone": (shapes.cone, 3 * 200 + 1, 2 * 200, False),
-    "pyramid": (shapes.pyramid, 16, 6, False),
+    "sphere": (meshes.sphere, 842, 1680, True),
+    "box": (meshes.box, 24, 12, True),
+    "cylinder": (meshes.cylinder, 4 * 50 + 2, 4 * 50, False),
+    "cone": (meshes.cone, 3 * 200 + 1, 2 * 200, False),
+    "pyramid": (meshes.pyramid, 16, 6, False),
 }
 
 
@@ -52,7 +54,6 @@ def test_template_counts_and_bounds(kind):
         assert np.allclose(mesh.points.mean(axis=0), 0, atol=1e-9)
     else:
         assert lo[0] == 0 and hi[0] == 1                      # end-anchored: x from 0 to 1
-    assert shape_sizes.is_centred(kind) == centred
 
 
 @pytest.mark.parametrize("kind", list(UNIT_KINDS))
@@ -64,7 +65,7 @@ def test_template_normals_outward_and_winding(kind):
 
 
 def test_round_kinds_are_exact_circles():
-    cyl, cone = shapes.cylinder(), shapes.cone()
+    cyl, cone = meshes.cylinder(), meshes.cone()
     assert np.allclose(np.hypot(cyl.points[2:, 1], cyl.points[2:, 2]), 0.5)
     rim = cone.points[1:401]                                  # base rim and side ring
     assert np.allclose(np.hypot(rim[:, 1], rim[:, 2]), 0.5)
@@ -73,12 +74,12 @@ def test_round_kinds_are_exact_circles():
     assert np.allclose(cone.normals[201:401, 0], 1 / np.sqrt(5))
     r_hat = cone.points[201:401, 1:] / 0.5
     assert np.allclose(cone.normals[201:401, 1:], 2 * r_hat / np.sqrt(5))
-    sphere = shapes.sphere()
+    sphere = meshes.sphere()
     assert np.allclose(np.linalg.norm(sphere.points, axis=1), 0.5, atol=1e-7)
 
 
 def test_box_faces_are_flat():
-    box = shapes.box()
+    box = meshes.box()
     for face in range(6):
         n = box.normals[4 * face:4 * face + 4]
         assert np.all(n == n[0])
@@ -89,7 +90,7 @@ def test_sphere_template_is_pyvistas_sphere():
     import pyvista as pv
 
     ref = pv.Sphere(radius=0.5, theta_resolution=30, phi_resolution=30)
-    mesh = shapes.sphere()
+    mesh = meshes.sphere()
     assert np.array_equal(mesh.points, np.asarray(ref.points, dtype=float))
     assert np.array_equal(mesh.triangles, np.asarray(ref.faces).reshape(-1, 4)[:, 1:])
     assert np.allclose(mesh.normals, mesh.points / np.linalg.norm(mesh.points, axis=1)[:, None])
@@ -101,9 +102,9 @@ def test_sphere_template_is_pyvistas_sphere():
 
 
 def test_templates_are_cached_and_read_only():
-    assert shapes.cylinder() is shapes.cylinder()
+    assert meshes.cylinder() is meshes.cylinder()
     with pytest.raises(ValueError):
-        shapes.box().points[0, 0] = 1.0
+        meshes.box().points[0, 0] = 1.0
 
 
 # -- frames -------------------------------------------------------------------------------
@@ -161,7 +162,7 @@ def test_placed_cylinder_spans_pos_to_pos_plus_axis(axis):
     p, a, r = np.array([0.5, -1.0, 2.0]), np.asarray(axis, dtype=float), 0.2
     L = np.linalg.norm(a)
     R = placement.frames(a, placement.adjust_up([1, 0, 0], a, [0, 1, 0]))
-    mesh = shapes.cylinder()
+    mesh = meshes.cylinder()
     pts, normals = placement.place(mesh, p, R, [L, 2 * r, 2 * r])
     rel = pts - p
     along = rel @ (a / L)
@@ -180,7 +181,7 @@ def test_box_along_y_has_the_expected_bounds():
     up = placement.adjust_up([1, 0, 0], axis, [0, 1, 0])
     assert np.allclose(up, (-1, 0, 0))
     for u in (up, [0, 1, 0]):                                # and the parallel-up fallback
-        pts, _ = placement.place(shapes.box(), [1, 1, 1], placement.frames(axis, u), [2, 0.5, 0.3])
+        pts, _ = placement.place(meshes.box(), [1, 1, 1], placement.frames(axis, u), [2, 0.5, 0.3])
         assert np.allclose(pts.min(axis=0), (0.75, 0, 0.85))
         assert np.allclose(pts.max(axis=0), (1.25, 2, 1.15))
 
@@ -190,7 +191,7 @@ def test_nonuniform_scale_normals_are_the_ellipsoids_gradient():
     M = 4
     pos, size = rng.normal(size=(M, 3)), rng.uniform(0.2, 3, size=(M, 3))
     R = placement.frames(rng.normal(size=(M, 3)), rng.normal(size=(M, 3)))
-    mesh = shapes.sphere()
+    mesh = meshes.sphere()
     pts, normals = placement.place(mesh, pos, R, size)
     n = len(mesh.points)
     for m in range(M):
@@ -204,7 +205,7 @@ def test_nonuniform_scale_normals_are_the_ellipsoids_gradient():
 
 
 def test_place_broadcasts_and_tiles():
-    mesh = shapes.box()
+    mesh = meshes.box()
     pos = np.arange(9, dtype=float).reshape(3, 3)
     pts, normals = placement.place(mesh, pos, np.eye(3), [1, 1, 1])
     assert pts.shape == normals.shape == (72, 3)
@@ -218,31 +219,31 @@ def test_place_broadcasts_and_tiles():
 
 
 def test_zero_size_gives_finite_normals():
-    pts, normals = placement.place(shapes.sphere(), [0, 0, 0], np.eye(3), [1, 0, 1])
+    pts, normals = placement.place(meshes.sphere(), [0, 0, 0], np.eye(3), [1, 0, 1])
     assert np.all(np.isfinite(pts)) and np.all(np.isfinite(normals))
 
 
 # -- arrow --------------------------------------------------------------------------------
 
 def test_arrow_dims_defaults():
-    assert np.allclose(shapes.arrow_dims(1), (0.1, 0.2, 0.3))
-    assert np.allclose(shapes.arrow_dims(5), (0.5, 1.0, 1.5))
-    assert np.allclose(shapes.arrow_dims(2, headwidth=0.7), (0.2, 0.7, 0.6))
+    assert np.allclose(meshes.arrow_dims(1), (0.1, 0.2, 0.3))
+    assert np.allclose(meshes.arrow_dims(5), (0.5, 1.0, 1.5))
+    assert np.allclose(meshes.arrow_dims(2, headwidth=0.7), (0.2, 0.7, 0.6))
 
 
 def test_arrow_dims_short_and_thin_rules():
     # a set shaftwidth makes the head longer than half the arrow: the unset ones shrink
-    assert np.allclose(shapes.arrow_dims(1, shaftwidth=0.5), (0.5, 1 / 3, 0.5))
+    assert np.allclose(meshes.arrow_dims(1, shaftwidth=0.5), (0.5, 1 / 3, 0.5))
     # a shaft thinner than 2% of the length: the unset ones grow
-    assert np.allclose(shapes.arrow_dims(1, shaftwidth=0.01), (0.01, 0.04, 0.06))
+    assert np.allclose(meshes.arrow_dims(1, shaftwidth=0.01), (0.01, 0.04, 0.06))
     # a set headlength is kept even when longer than the arrow
-    assert np.allclose(shapes.arrow_dims(1, headlength=2), (0.025, 0.05, 2))
+    assert np.allclose(meshes.arrow_dims(1, headlength=2), (0.025, 0.05, 2))
 
 
 @pytest.mark.parametrize("length, kw", [(1.0, {}), (3.0, {"shaftwidth": 0.4}), (1.0, {"headlength": 2})])
 def test_arrow_tip_at_length(length, kw):
-    sw, hw, hl = shapes.arrow_dims(length, **kw)
-    mesh = shapes.arrow(length, sw, hw, hl)
+    sw, hw, hl = meshes.arrow_dims(length, **kw)
+    mesh = meshes.arrow(length, sw, hw, hl)
     assert_mesh_arrays(mesh)
     assert len(mesh.points) == 40 and len(mesh.triangles) == 18
     assert mesh.points[:, 0].max() == length
@@ -256,7 +257,7 @@ def test_arrow_tip_at_length(length, kw):
 
 def test_arrow_placed_along_its_axis():
     axis = np.array([0.0, 0.0, -2.0])
-    mesh = shapes.arrow(2.0, *shapes.arrow_dims(2.0))
+    mesh = meshes.arrow(2.0, *meshes.arrow_dims(2.0))
     pts, _ = placement.place(mesh, [1, 1, 1], placement.frames(axis, [0, 1, 0]), [1, 1, 1])
     assert np.allclose(pts[np.argmin(pts[:, 2])], (1, 1, -1))
 
@@ -265,7 +266,7 @@ def test_arrow_placed_along_its_axis():
 
 def test_ring_lies_in_the_yz_plane_at_radius_plus_minus_thickness():
     R, t = 1.5, 0.1
-    mesh = shapes.ring(R, t)
+    mesh = meshes.ring(R, t)
     assert_mesh_arrays(mesh)
     assert len(mesh.points) == 60 * 20 and len(mesh.triangles) == 2 * 60 * 20
     p = mesh.points
@@ -275,14 +276,13 @@ def test_ring_lies_in_the_yz_plane_at_radius_plus_minus_thickness():
     assert np.isclose(np.abs(p[:, 0]).max(), t)
     assert_winding_outward(mesh)
     # its size, VPython's way: thickness is the cross section's radius
-    size = shape_sizes.ring_size(R, t)
-    assert np.allclose(size, (0.2, 3.2, 3.2))
-    assert np.isclose(shape_sizes.radius_from_size("ring", size), R)
-    assert np.isclose(shape_sizes.ring_thickness_from_size(size), t)
+    ring = vp.ring(radius=R, thickness=t)
+    assert np.allclose(ring.size.value, (0.2, 3.2, 3.2))
+    assert np.isclose(ring.radius, R) and np.isclose(ring.thickness, t)
 
 
 def test_ring_with_axis_z_lies_in_xy():
-    pts, _ = placement.place(shapes.ring(1, 0.1), [0, 0, 5], placement.frames([0, 0, 3], [0, 1, 0]), [1, 1, 1])
+    pts, _ = placement.place(meshes.ring(1, 0.1), [0, 0, 5], placement.frames([0, 0, 3], [0, 1, 0]), [1, 1, 1])
     assert np.allclose(np.abs(pts[:, 2] - 5).max(), 0.1)
     assert np.isclose(np.hypot(pts[:, 0], pts[:, 1]).max(), 1.1)
 
@@ -291,7 +291,7 @@ def test_ring_with_axis_z_lies_in_xy():
 def test_tube_passes_through_its_points(start_cap):
     pts = np.array([[0, 0, 0], [1, 0, 0], [1, 2, 0], [1, 2, 0.5], [1, 2, 0.5]], dtype=float)
     radius = np.array([0.1, 0.2, 0.1, 0.05, 0.05])
-    mesh = shapes.tube(pts, radius, start_cap=start_cap)
+    mesh = meshes.tube(pts, radius, start_cap=start_cap)
     assert_mesh_arrays(mesh)
     S, sides = len(pts) - 1, 16
     cap = 4 * sides + 1
@@ -312,40 +312,51 @@ def test_tube_passes_through_its_points(start_cap):
 
 
 def test_tube_with_scalar_radius_and_no_joints():
-    mesh = shapes.tube([[0, 0, 0], [0, 1, 0], [0, 1, 1]], 0.01, sides=8, joints=False)
+    mesh = meshes.tube([[0, 0, 0], [0, 1, 0], [0, 1, 1]], 0.01, sides=8, joints=False)
     assert len(mesh.points) == 2 * 2 * 8 and len(mesh.triangles) == 2 * 2 * 8
     with pytest.raises(ValueError):
-        shapes.tube([[0, 0, 0]], 0.1)
+        meshes.tube([[0, 0, 0]], 0.1)
 
 
 # -- sizes --------------------------------------------------------------------------------
 
 def test_default_sizes_and_radius_rules():
-    assert np.array_equal(shape_sizes.default_size("sphere"), (2, 2, 2))
-    assert np.array_equal(shape_sizes.default_size("cylinder"), (1, 2, 2))
-    assert np.array_equal(shape_sizes.default_size("arrow"), (1, 0.2, 0.2))
-    assert np.array_equal(shape_sizes.default_size("ring"), (0.2, 2.2, 2.2))
-    assert shape_sizes.radius_from_size("sphere", shape_sizes.default_size("sphere")) == 1
-    assert shape_sizes.radius_from_size("helix", shape_sizes.default_size("helix")) == 1
-    assert shape_sizes.radius_from_size("ring", shape_sizes.default_size("ring")) == pytest.approx(1)
-    assert np.array_equal(shape_sizes.size_for_radius("sphere", (2, 2, 2), 0.025), (0.05, 0.05, 0.05))
-    assert np.array_equal(shape_sizes.size_for_radius("cylinder", (3, 2, 2), 0.5), (3, 1, 1))
-    assert np.allclose(shape_sizes.size_for_radius("ring", (0.2, 2.2, 2.2), 2), (0.2, 4.2, 4.2))
-    assert np.allclose(shape_sizes.size_for_ring_thickness((0.2, 2.2, 2.2), 0.3), (0.6, 2.6, 2.6))
-    with pytest.raises(AttributeError):
-        shape_sizes.radius_from_size("box", (1, 1, 1))
-    assert shape_sizes.helix_wire_radius((1, 0.03, 0.03), 0.003) == 0.0015
-    assert shape_sizes.helix_wire_radius((1, 2, 2)) == 2 / 40
-    assert not shape_sizes.axis_sets_length("sphere") and shape_sizes.axis_sets_length("box")
-    assert not shape_sizes.size_sets_axis("ring") and shape_sizes.size_sets_axis("sphere")
-    assert shape_sizes.SIZE_INDEX == {"length": 0, "height": 1, "width": 2}
+    """VPython's size rules on its objects: default sizes, radius <-> size, what an axis
+    or a size changes."""
+    defaults = {vp.sphere: (2, 2, 2), vp.cylinder: (1, 2, 2), vp.cone: (1, 2, 2),
+                vp.helix: (1, 2, 2), vp.arrow: (1, 0.2, 0.2), vp.ring: (0.2, 2.2, 2.2),
+                vp.box: (1, 1, 1), vp.pyramid: (1, 1, 1), vp.ellipsoid: (1, 1, 1)}
+    for make, size in defaults.items():
+        assert np.allclose(make().size.value, size), make
+    assert vp.sphere().radius == 1 and vp.helix().radius == 1
+    assert vp.ring().radius == pytest.approx(1)
+    assert np.allclose(vp.sphere(radius=0.025).size.value, (0.05, 0.05, 0.05))
+    c = vp.cylinder(size=vp.vector(3, 2, 2))
+    c.radius = 0.5
+    assert np.allclose(c.size.value, (3, 1, 1))
+    r = vp.ring()
+    r.radius = 2
+    assert np.allclose(r.size.value, (0.2, 4.2, 4.2))
+    r = vp.ring()
+    r.thickness = 0.3
+    assert np.allclose(r.size.value, (0.6, 2.6, 2.6))
+    assert vp.helix().thickness == pytest.approx(0.1)              # radius / 10 by default
+    b = vp.box()
+    b.length = 3                                                   # length is size.x and axis
+    assert np.allclose(b.axis.value, (3, 0, 0)) and np.allclose(b.size.value, (3, 1, 1))
+    s = vp.sphere()
+    s.axis = vp.vector(3, 0, 0)                                    # a sphere's axis: its turn
+    assert np.allclose(s.size.value, (2, 2, 2))
+    g = vp.ring()
+    g.size = vp.vector(1, 1, 1)                                    # a ring's size: not its axis
+    assert np.allclose(g.axis.value, (1, 0, 0))
 
 
 def test_tube_vertex_points_maps_vertices_to_their_polyline_point():
     pts = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0]], dtype=float)
     for start_cap in (False, True):
-        mesh = shapes.tube(pts, 0.1, start_cap=start_cap)
-        owner = shapes.tube_vertex_points(len(pts), start_cap=start_cap)
+        mesh = meshes.tube(pts, 0.1, start_cap=start_cap)
+        owner = meshes.tube_vertex_points(len(pts), start_cap=start_cap)
         assert owner.shape == (len(mesh.points),)
         assert np.all(np.linalg.norm(mesh.points - pts[owner], axis=1) <= 0.1 + 1e-12)
 

@@ -11,26 +11,26 @@ import numpy as np
 import pytest
 
 from conftest import ROOT
-from springscene.vpython import texture_images
-from springscene.vpython.shapes import (LEFT, RIGHT, SIDES, ring, texture_parts,
-                                        textured_box, textured_cone, textured_cylinder,
-                                        textured_pyramid, textured_sphere)
-from springscene.vpython.textures import TextureSpec, spec_of, transform_uv
-from springscene.vpython.runner import run_program
+from springscene.vpython.api import texture_images
+from springscene.vpython.geometry.meshes import (LEFT, RIGHT, SIDES, ring, texture_parts,
+                                                 textured_box, textured_cone, textured_cylinder,
+                                                 textured_pyramid, textured_sphere)
+from springscene.vpython.api.texturing import TextureSpec, spec_of, transform_uv
+from springscene.vpython.run.runner import run_program
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 
 
 @pytest.fixture
 def vp():
-    import springscene.vpython as vp
+    import springscene.vpython.api as vp
 
     vp.reset()
     return vp
 
 
 def notes():
-    from springscene.vpython import widgets
+    from springscene.vpython.api import widgets
 
     return widgets.notes()
 
@@ -218,7 +218,7 @@ def test_the_pictures_say_where_they_come_from():
 # -- pictures -----------------------------------------------------------------------------
 
 def _render(vp, size=(400, 400)):
-    from springscene.vpython.draw import Renderer
+    from springscene.vpython.draw.renderer import Renderer
 
     vp.scene.width, vp.scene.height = size
     r = Renderer(vp.scene, antialias=False)
@@ -338,8 +338,8 @@ def test_the_earth_and_moon_program(tmp_path):
 
 
 def test_object_meshes_with_texture_coordinates_for_compounds(vp):
-    from springscene.vpython.draw import object_mesh
-    from springscene.vpython.shapes import textured_box
+    from springscene.vpython.geometry.object_meshes import object_mesh
+    from springscene.vpython.geometry.meshes import textured_box
 
     s = vp.sphere(radius=2, texture=vp.textures.earth)
     points, normals, triangles, rgb, uv = object_mesh(s, uv=True)

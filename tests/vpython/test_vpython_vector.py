@@ -12,13 +12,13 @@ import pytest
 from springscene import build, config
 from springscene.model import physics
 from wikiloop import wiki_loop
-from springscene.vpython import vmath
+from springscene.vpython.api import vmath
 import importlib
 
-V = importlib.import_module("springscene.vpython.vector")   # the module (the package exports the class)
-from springscene.vpython import vector_turns as T
-from springscene.vpython.vector import (as_vector, comp, cross, diff_angle, dot, hat, mag,
-                                        mag2, norm, proj, rotate, vec, vector)
+V = importlib.import_module("springscene.vpython.api.vectors")   # the module (the package exports the class)
+from springscene.vpython.api import turns as T
+from springscene.vpython.api.vectors import (as_vector, comp, cross, diff_angle, dot, hat, mag,
+                                             mag2, norm, proj, rotate, vec, vector)
 
 
 def xyz(v):
@@ -412,9 +412,9 @@ def test_module_exports():
     assert set(V.__all__) == want and set(T.__all__) == {'adjust_axis', 'adjust_up',
                                                          'object_rotate'}
     ns = {}
-    exec("from springscene.vpython.vector import *", ns)
+    exec("from springscene.vpython.api.vectors import *", ns)
     assert want <= set(ns) and "as_vector" not in ns
-    exec("from springscene.vpython import *", ns)          # VPython's namespace has all
+    exec("from springscene.vpython.api import *", ns)          # VPython's namespace has all
     assert {'adjust_axis', 'adjust_up', 'object_rotate'} <= set(ns)
 
 
@@ -459,7 +459,7 @@ def test_vmath_other_names():
         assert absent not in vmath.NAMES
     assert vmath.__all__ == list(vmath.NAMES)
     ns = {}
-    exec("from springscene.vpython.vmath import *", ns)
+    exec("from springscene.vpython.api.vmath import *", ns)
     assert {k: ns[k] for k in vmath.NAMES} == vmath.NAMES
 
 

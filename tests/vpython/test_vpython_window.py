@@ -49,7 +49,7 @@ def _loaded(modules: set[str], package: str) -> bool:
 def test_child_imports_matplotlib_only_for_a_graph(tmp_path, with_graph):
     modules = _child_modules(tmp_path, with_graph)
     # the program's frames were drawn in this process, with VTK's OpenGL renderer
-    assert "springscene.vpython.draw" in modules
+    assert "springscene.vpython.draw.renderer" in modules
     assert "vtkmodules.vtkRenderingOpenGL2" in modules
     assert "pyvista" in modules                      # pyvista's core (PolyData) stays
     assert not _loaded(modules, "pyvista.plotting")

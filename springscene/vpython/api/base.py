@@ -1,0 +1,77 @@
+"""What every drawable VPython object shares: its canvas, visibility and change flag.
+
+An object goes to the canvas given as ``canvas=``, else to the current one
+(:meth:`.canvases.canvas.get_selected`). It only marks itself changed (``_dirty``);
+the renderer (:mod:`springscene.vpython.draw.renderer`) reads the objects of a canvas once
+a frame. :mod:`.objects`, :mod:`.curves` and :mod:`.labels` build on :class:`_Base`.
+"""
+
+from __future__ import annotations
+
+from .canvases import canvas
+
+
+def _current_canvas():
+    return canvas.get_selected()
+
+
+class _Base:
+    """What every drawable object shares: its canvas, visibility and change flag."""
+
+    _kind = "object"
+
+    _frame = None        # VPython 6's frame holding the object (:mod:`.frames`)
+
+    def _register(self, args: dict) -> None:
+        cv = args.pop("canvas", None)
+        if cv is None:
+            cv = args.pop("display", None)     # VPython 6's name for it
+        self._canvas = cv if cv is not None else _current_canvas()
+        self._dirty = True
+        self._canvas._add(self)
+        if args.get("frame") is not None:
+            self.frame = args.pop("frame")
+        args.pop("frame", None)
+        args.pop("display", None)
+
+    @property
+    def frame(self):
+        """VPython 6's frame the object is in (None: the world)."""
+        return self._frame
+
+    @frame.setter
+    def frame(self, parent) -> None:
+        if self._frame is not None and self in self._frame._children:
+            self._frame._children.remove(self)
+        self._frame = parent
+        if parent is not None:
+            parent._children.append(self)
+        self._dirty = True
+
+    def _touch(self) -> None:
+        self._dirty = True
+
+    @property
+    def canvas(self):
+        return self._canvas
+
+    @canvas.setter
+    def canvas(self, value) -> None:
+        raise AttributeError("canvas cannot be modified")
+
+    @property
+    def visible(self) -> bool:
+        return self._visible
+
+    @visible.setter
+    def visible(self, value) -> None:
+        self._visible = bool(value)
+        self._dirty = True
+
+    def delete(self) -> None:
+        """Remove the object from its canvas, as VPython's ``obj.delete()`` does."""
+        self._visible = False
+        self._canvas._remove(self)
+
+    def _ipython_display_(self) -> None:   # VPython prints nothing for an object
+        pass

@@ -1,0 +1,24 @@
+"""What every VPython object checks in what a program gives it.
+
+A vector argument is copied (so the program's own vector is never linked to the
+object) and anything else is VPython's ``TypeError``. A name VPython has and
+springscene lacks fails with an :class:`UnsupportedError` naming it (the package's
+``__getattr__``). Used by the canvas, the objects and curves.
+"""
+
+from __future__ import annotations
+
+from .vectors import as_vector, vector
+
+class UnsupportedError(AttributeError):
+    """A real VPython feature springscene does not reproduce."""
+
+
+def _vec(value, name: str) -> vector:
+    """A fresh copy of ``value`` as a vector; VPython's error if it is not one."""
+    if isinstance(value, vector):
+        return vector(value)
+    try:
+        return as_vector(value, name)
+    except TypeError:
+        raise TypeError(f"{name} must be a vector") from None

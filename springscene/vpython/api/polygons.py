@@ -1,0 +1,285 @@
+"""VPython 7's ``vertex``, ``triangle`` and ``quad``: surfaces a program builds point by point.
+
+As ``vpython/vpython.py`` (``class vertex``, ``triangle``, ``quad(triangle)``)
+and GlowScript's ``lib/glow/primitives.js``:
+
+- a ``vertex`` has ``pos``, ``normal`` (default <0, 0, 1>: VPython does not
+  compute one from the triangle), ``color``, ``opacity``, ``shininess`` (0.6),
+  ``emissive``, ``texpos`` (z must be 0) and ``bumpaxis``; it is not drawn
+  itself, and changing it (``v.pos.z = 1`` too) changes every triangle or quad
+  that uses it in the next frame. ``v.rotate(angle, axis, origin)`` turns its
+  pos about ``origin`` (default <0, 0, 0>) and its normal (GlowScript's);
+- a ``triangle`` is ``triangle(v0=, v1=, v2=)`` or ``triangle(vs=[a, b, c])``, a
+  ``quad`` the same with four vertices, drawn as the triangles (v0, v1, v2) and
+  (v0, v2, v3) (WebGLRenderer.js ``add_indices``). Their attributes are the
+  vertices, ``vs``, ``texture``, ``bumpmap``, ``visible`` and ``pickable``;
+  ``pos``, ``color``, ``size``, ``axis``, ``up``, ``opacity``, ``shininess`` and
+  ``emissive`` are GlowScript's "A triangle has no pos attribute." errors, and
+  ``rotate`` is refused ("rotate the vertices instead").
+
+Colours are blended between vertices, a texture is multiplied by them
+(tri_render_vertex.shader: ``vcolor = color``; no place, flip or turn for
+triangles) and placed by each vertex's ``texpos``. :func:`arrays` gives the
+renderer (:mod:`..draw.renderer`) the triangles of many at once.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .base import _Base, _current_canvas
+from .checks import _vec
+from .vectors import vector
+
+
+class vertex:
+    """A corner of triangles and quads: position, normal, colour, opacity, texture position."""
+
+    def __init__(self, **args) -> None:
+        object.__setattr__(self, "_users", [])
+        cv = args.pop("canvas", None)
+        self._canvas = cv if cv is not None else _current_canvas()
+        self._pos = vector(0, 0, 0)
+        self._normal = vector(0, 0, 1)
+        self._color = vector(1, 1, 1)
+        self._texpos = vector(0, 0, 0)
+        self._bumpaxis = vector(1, 0, 0)
+        self._opacity = 1.0
+        self._shininess = 0.6
+        self._emissive = False
+        self._visible = True
+        self._pickable = True
+        for name in ("pos", "normal", "color", "texpos", "bumpaxis", "opacity", "shininess",
+                     "emissive", "visible", "pickable", "red", "green", "blue"):
+            if name in args:
+                setattr(self, name, args.pop(name))
+        for name in ("_pos", "_normal", "_color", "_texpos", "_bumpaxis"):
+            getattr(self, name)._on_change = self._changed
+        for name, value in args.items():      # the program's own attributes
+            setattr(self, name, value)
+
+    def _changed(self) -> None:
+        for user in self._users:
+            user._dirty = True
+
+    def _vector(name: str, check=None):   # noqa: N805 -- a property factory used in the class body
+        attr = "_" + name
+
+        def get(self):
+            return getattr(self, attr)
+
+        def set_(self, value):
+            v = _vec(value, name)
+            if check is not None:
+                check(v)
+            v._on_change = self._changed
+            object.__setattr__(self, attr, v)
+            self._changed()
+        return property(get, set_)
+
+    def _scalar(name: str, kind=float):   # noqa: N805 -- a property factory used in the class body
+        attr = "_" + name
+
+        def get(self):
+            return getattr(self, attr)
+
+        def set_(self, value):
+            object.__setattr__(self, attr, kind(value))
+            self._changed()
+        return property(get, set_)
+
+    def _flat(v: vector) -> None:        # noqa: N805 -- a check used in the class body
+        if v.z != 0:
+            raise AttributeError("the z component of texpos must currently be zero")
+
+    pos = _vector("pos")
+    normal = _vector("normal")
+    color = _vector("color")
+    texpos = _vector("texpos", _flat)
+    bumpaxis = _vector("bumpaxis")
+    opacity = _scalar("opacity")
+    shininess = _scalar("shininess")
+    emissive = _scalar("emissive", bool)
+    visible = _scalar("visible", bool)
+    pickable = _scalar("pickable", bool)
+    red = property(lambda self: self._color.x,
+                   lambda self, v: setattr(self, "color", vector(v, self._color.y, self._color.z)))
+    green = property(lambda self: self._color.y,
+                     lambda self, v: setattr(self, "color", vector(self._color.x, v, self._color.z)))
+    blue = property(lambda self: self._color.z,
+                    lambda self, v: setattr(self, "color", vector(self._color.x, self._color.y, v)))
+
+    @property
+    def canvas(self):
+        return self._canvas
+
+    @property
+    def triangleCount(self) -> int:     # noqa: N802 -- VPython's name
+        return len(self._users)
+
+    def rotate(self, angle=None, axis=None, origin=None) -> None:
+        """Turn pos about ``origin`` (default <0, 0, 0>) and the normal, by ``angle`` about ``axis``."""
+        if angle is None:
+            raise TypeError("vertex.rotate() requires angle:...")
+        if axis is None:
+            raise TypeError("vertex.rotate() requires axis:...")
+        axis = _vec(axis, "axis").norm()
+        origin = vector(0, 0, 0) if origin is None else _vec(origin, "origin")
+        self.pos = origin + (self._pos - origin).rotate(angle=angle, axis=axis)
+        self.normal = self._normal.rotate(angle=angle, axis=axis)
+
+
+def _check_vertex(value, shape: str, name: str) -> "vertex":
+    if not isinstance(value, vertex):
+        raise AttributeError(f"In a {shape}, {name} must be a vertex object.")
+    return value
+
+
+class triangle(_Base):
+    """Three vertices, counter-clockwise seen from where their normals point."""
+
+    _kind = "triangle"
+    _names = ("v0", "v1", "v2")
+
+    def __init__(self, **args) -> None:
+        shape = type(self).__name__
+        if "vs" in args:
+            vs = list(args.pop("vs"))
+            if len(vs) != len(self._names):
+                raise AttributeError(f"A {shape} must specify {len(self._names)} vertex objects.")
+            args.update(zip(self._names, vs))
+        verts = [_check_vertex(args.pop(n, None), shape, n) for n in self._names]
+        object.__setattr__(self, "_verts", verts)
+        self._visible = bool(args.pop("visible", True))
+        self._pickable = bool(args.pop("pickable", True))
+        self._texture = args.pop("texture", None)
+        self._bumpmap = args.pop("bumpmap", None)
+        args.pop("canvas", None)                  # a triangle's canvas is its vertices'
+        for v in verts:
+            v._users.append(self)
+        self._register({"canvas": verts[0].canvas})
+        for name, value in args.items():        # the program's own attributes
+            setattr(self, name, value)
+
+    def _vertex_property(index: int):   # noqa: N805 -- a property factory used in the class body
+        def get(self):
+            return self._verts[index]
+
+        def set_(self, value):
+            self._replace(index, _check_vertex(value, type(self).__name__,
+                                               self._names[index]))
+        return property(get, set_)
+
+    def _replace(self, index: int, value: vertex) -> None:
+        old = self._verts[index]
+        if self in old._users:
+            old._users.remove(self)
+        self._verts[index] = value
+        value._users.append(self)
+        self._dirty = True
+
+    v0, v1, v2 = _vertex_property(0), _vertex_property(1), _vertex_property(2)
+
+    @property
+    def vs(self) -> list:
+        return list(self._verts)
+
+    @vs.setter
+    def vs(self, value) -> None:
+        value = list(value)
+        if len(value) != len(self._names):
+            raise AttributeError(f"A {type(self).__name__} must be a list of "
+                                 f"{len(self._names)} vertex objects.")
+        for i, v in enumerate(value):
+            self._replace(i, _check_vertex(v, type(self).__name__, self._names[i]))
+
+    def _look(name: str):   # noqa: N805 -- a property factory used in the class body
+        attr = "_" + name
+
+        def get(self):
+            return getattr(self, attr)
+
+        def set_(self, value):
+            object.__setattr__(self, attr, value)
+            self._dirty = True
+        return property(get, set_)
+
+    texture = _look("texture")
+    bumpmap = _look("bumpmap")
+    pickable = _look("pickable")
+
+    def _missing(name: str):   # noqa: N805 -- a property factory used in the class body
+        def fail(self, *value):
+            raise AttributeError(f"A {type(self).__name__} has no {name} attribute.")
+        return property(fail, fail)
+
+    pos, color, size = _missing("pos"), _missing("color"), _missing("size")
+    axis, up, opacity = _missing("axis"), _missing("up"), _missing("opacity")
+    shininess, emissive = _missing("shininess"), _missing("emissive")
+
+    def rotate(self, *args, **kwargs) -> None:
+        raise AttributeError(f"A {type(self).__name__} has no rotate method; "
+                             "rotate the vertices instead.")
+
+    def clone(self, **args):
+        raise TypeError(f"Cannot clone a {type(self).__name__} object.")   # vpython.py
+
+    def delete(self) -> None:
+        for v in self._verts:
+            if self in v._users:
+                v._users.remove(self)
+        super().delete()
+
+
+class quad(triangle):
+    """Four vertices, drawn as the triangles (v0, v1, v2) and (v0, v2, v3)."""
+
+    _names = ("v0", "v1", "v2", "v3")
+    v3 = triangle._vertex_property(3)
+
+
+# -- arrays for the renderer --------------------------------------------------------------
+
+_QUAD = np.array([[0, 1, 2], [0, 2, 3]])
+
+
+def arrays(objs) -> tuple[np.ndarray, ...]:
+    """Points, normals, triangles, RGBA (uint8), texture coordinates of triangles and quads.
+
+    Each object has its own copies of its vertices (3 or 4 points). A
+    triangle's winding is made to agree with its vertices' normals, so that a
+    renderer lighting back faces from behind (VTK's two-sided lighting) lights
+    it from the side its normals point to, as GlowScript does.
+    """
+    verts = [v for o in objs for v in o._verts]
+    counts = np.array([len(o._verts) for o in objs])
+    pos = np.array([v._pos._xyz() for v in verts], dtype=float)
+    normal = np.array([v._normal._xyz() for v in verts], dtype=float)
+    color = np.array([(*v._color._xyz(), v._opacity) for v in verts], dtype=float)
+    uv = np.array([v._texpos._xyz()[:2] for v in verts], dtype=float)
+    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
+    tris = [starts[counts == 3, None] + _QUAD[0]]
+    fours = starts[counts == 4]
+    if len(fours):
+        tris.append((fours[:, None, None] + _QUAD[None]).reshape(-1, 3))
+    triangles = np.concatenate(tris).astype(np.int64)
+    p = pos[triangles]
+    face = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
+    backwards = np.einsum("ij,ij->i", face, normal[triangles].sum(axis=1)) < 0
+    triangles[backwards] = triangles[backwards][:, [0, 2, 1]]
+    rgba = np.clip(np.rint(color * 255), 0, 255).astype(np.uint8)
+    return pos, _unit(normal), triangles, rgba, uv
+
+
+def _unit(v: np.ndarray) -> np.ndarray:
+    n = np.linalg.norm(v, axis=1, keepdims=True)
+    return v / np.where(n == 0, 1.0, n)
+
+
+def look(obj) -> tuple[float, bool]:
+    """(shininess, emissive) a triangle is drawn with: its vertices' mean and any."""
+    return (float(np.mean([v._shininess for v in obj._verts])),
+            any(v._emissive for v in obj._verts))
+
+
+__all__ = ["vertex", "triangle", "quad", "arrays", "look"]

@@ -1,0 +1,310 @@
+"""Which VPython a program was written for, and how to run it in CPython.
+
+Three dialects run unmodified:
+
+- **VPython 7** (``from vpython import *``, ``import vpython``): run as it is.
+- **VPython 6** (``from visual import *``, ``import visual``, ``visual.graph``, ...):
+  run as it is, with :mod:`.visual6`'s modules importable and VPython 6's vectors
+  (tuples as vectors, vectors as sequences) turned on for the run.
+- **Web VPython / GlowScript** (first line ``GlowScript 3.2 VPython`` or
+  ``Web VPython 3.2``; no imports): the header is blanked (line numbers stay), the
+  program runs with the names its page gives it (VPython's, math's, ``random()``,
+  ...; :func:`springscene.vpython.dialects.glowscript.names`), and the leniencies of its compiler that CPython
+  lacks are put in: ``"t = " + t`` concatenates a string and a number, as
+  JavaScript does.
+
+:func:`detect` reads the source; :func:`compile_program` gives the code to run.
+"""
+
+from __future__ import annotations
+
+import ast
+import math
+import numbers
+import re
+from decimal import Decimal
+from dataclasses import dataclass, field
+from typing import Any
+
+# GScompiler.js: the first line names the language and version ("GlowScript 3.2 VPython",
+# "Web VPython 3.2"); RapydScript/JavaScript programs are not Python and are refused
+_HEADER = re.compile(r"^\s*(GlowScript|Web\s*VPython)\s+(\d+(?:\.\d+)*)\s*(\w*)", re.I)
+_VISUAL = re.compile(r"^\s*(from\s+(visual|vis)(\.\w+)?\s+import|import\s+(visual|vis)\b)",
+                     re.M)
+_VPYTHON = re.compile(r"^\s*(from\s+vpython(\.\w+)?\s+import|import\s+vpython\b)", re.M)
+
+
+@dataclass
+class Dialect:
+    """What a program was written for: ``kind`` is "vpython7", "vpython6" or
+    "glowscript"; ``name`` is what the user is told ("Web VPython 3.2")."""
+
+    kind: str
+    name: str
+    version: str = ""
+    language: str = "VPython"
+    notes: list[str] = field(default_factory=list)
+
+
+def detect(source: str) -> Dialect:
+    """The dialect of ``source``, from its header line or its imports."""
+    first = next((line for line in source.splitlines() if line.strip()), "")
+    m = _HEADER.match(first)
+    if m:
+        family = "GlowScript" if m.group(1).lower().startswith("glow") else "Web VPython"
+        language = m.group(3) or "VPython"
+        return Dialect("glowscript", f"{family} {m.group(2)}", m.group(2), language)
+    if _VISUAL.search(source) and not _VPYTHON.search(source):
+        return Dialect("vpython6", "VPython 6")
+    return Dialect("vpython7", "VPython 7")
+
+
+def strip_header(source: str) -> str:
+    """The source with its GlowScript header line blanked (so line numbers stay)."""
+    lines = source.splitlines(keepends=True)
+    for i, line in enumerate(lines):
+        if line.strip():
+            if _HEADER.match(line):
+                lines[i] = "\n"
+            break
+    return "".join(lines)
+
+
+def _is_text(node: ast.AST) -> bool:
+    """A node that is certainly a string: a literal, an f-string, ``str(...)``, or a
+    sum with one of those in it."""
+    if isinstance(node, ast.Constant):
+        return isinstance(node.value, str)
+    if isinstance(node, ast.JoinedStr):
+        return True
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name):
+        return node.func.id in ("str", "repr", "format", "__gs_add__")
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        return _is_text(node.left) or _is_text(node.right)
+    return False
+
+
+class _TextPlus(ast.NodeTransformer):
+    """``"a" + x`` → ``__gs_add__("a", x)``: JavaScript's ``+`` joins a string and a
+    number; CPython raises. Only sums with a string in them are touched, so the
+    arithmetic of the program runs at full speed."""
+
+    def visit_BinOp(self, node: ast.BinOp) -> ast.AST:
+        self.generic_visit(node)
+        if isinstance(node.op, ast.Add) and (_is_text(node.left) or _is_text(node.right)):
+            call = ast.Call(func=ast.Name("__gs_add__", ast.Load()),
+                            args=[node.left, node.right], keywords=[])
+            return ast.copy_location(call, node)
+        return node
+
+    def visit_AugAssign(self, node: ast.AugAssign) -> ast.AST:
+        self.generic_visit(node)
+        if isinstance(node.op, ast.Add) and _is_text(node.value) and \
+                isinstance(node.target, ast.Name):
+            value = ast.Call(func=ast.Name("__gs_iadd__", ast.Load()),
+                             args=[ast.Name(node.target.id, ast.Load()), node.value],
+                             keywords=[])
+            return ast.copy_location(ast.Assign(targets=[node.target], value=value), node)
+        return node
+
+
+def _js_number(x: float) -> str:
+    """A number as JavaScript writes it: ``2.0`` → ``2``, ``1e-05`` → ``0.00001``,
+    ``1e-07`` → ``1e-7``, ``nan`` → ``NaN``, ``inf`` → ``Infinity``."""
+    if isinstance(x, numbers.Integral):
+        return str(int(x))
+    x = float(x)
+    if math.isnan(x):
+        return "NaN"
+    if math.isinf(x):
+        return "Infinity" if x > 0 else "-Infinity"
+    if x.is_integer() and abs(x) < 1e21:
+        return str(int(x))
+    text = repr(x)
+    if "e" not in text:
+        return text
+    mantissa, exponent = text.split("e")
+    e = int(exponent)
+    if -6 <= e < 21:
+        return format(Decimal(text), "f")
+    return f"{mantissa}e{'+' if e > 0 else '-'}{abs(e)}"
+
+
+def _js_scalar(value: Any) -> bool:
+    """A value JavaScript's ``+`` writes into text by itself (a number, a bool, None, a
+    vector); anything else keeps Python's ``+`` (and its ``__radd__``)."""
+    return value is None or isinstance(value, numbers.Number) or hasattr(value, "_xyz")
+
+
+def js_text(value: Any) -> str:
+    """A value as JavaScript's ``+`` writes it into a string (``1.0`` → ``"1"``)."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if value is None:
+        return "null"
+    if isinstance(value, numbers.Number):
+        return _js_number(value)
+    if hasattr(value, "_xyz"):
+        return "< " + ", ".join(_js_number(c) for c in value._xyz()) + " >"
+    return str(value)
+
+
+def gs_add(a: Any, b: Any) -> Any:
+    """``a + b`` as GlowScript does it: text and a number (bool, vector) joined, else
+    Python's ``+``."""
+    if isinstance(a, str) and not isinstance(b, str) and _js_scalar(b):
+        return a + js_text(b)
+    if isinstance(b, str) and not isinstance(a, str) and _js_scalar(a):
+        return js_text(a) + b
+    return a + b
+
+
+def gs_iadd(a: Any, b: Any) -> Any:
+    """``a += b``: joined as :func:`gs_add` for text and a number, else Python's ``+=``
+    (a list extended in place)."""
+    if isinstance(a, str) or (isinstance(b, str) and _js_scalar(a)):
+        return gs_add(a, b)
+    a += b
+    return a
+
+
+def gs_same(a: Any, b: Any) -> bool:
+    """JavaScript's ``===``, which RapydScript makes of ``is``: numbers, text and bools
+    compare by value (``True is 1`` is false), anything else by identity."""
+    for kind in (bool, str):
+        if isinstance(a, kind) or isinstance(b, kind):
+            return isinstance(a, kind) and isinstance(b, kind) and a == b
+    if isinstance(a, numbers.Number) and isinstance(b, numbers.Number):
+        return a == b
+    return a is b
+
+
+class _IsLiteral(ast.NodeTransformer):
+    """``key is 'left'`` → ``key == 'left'``: RapydScript compiles ``is`` to ``===``,
+    which compares values (the GlowScript docs write key handlers so)."""
+
+    def visit_Compare(self, node: ast.Compare) -> ast.AST:
+        self.generic_visit(node)
+        if len(node.ops) == 1 and isinstance(node.ops[0], (ast.Is, ast.IsNot)) and any(
+                isinstance(x, ast.Constant) and x.value is not None
+                for x in (node.left, node.comparators[0])):
+            same = ast.Call(func=ast.Name("__gs_same__", ast.Load()),
+                            args=[node.left, node.comparators[0]], keywords=[])
+            if isinstance(node.ops[0], ast.IsNot):
+                same = ast.UnaryOp(op=ast.Not(), operand=same)
+            return ast.copy_location(same, node)
+        operands = [node.left, *node.comparators]
+        ops = []
+        for op, left, right in zip(node.ops, operands, operands[1:]):
+            literal = any(isinstance(x, ast.Constant) and x.value is not None
+                          and not isinstance(x.value, bool) for x in (left, right))
+            if literal and isinstance(op, ast.Is):
+                op = ast.Eq()
+            elif literal and isinstance(op, ast.IsNot):
+                op = ast.NotEq()
+            ops.append(op)
+        node.ops = ops
+        return node
+
+
+class _Push(ast.NodeTransformer):
+    """``L.append(a, b)`` → ``__gs_push__(L, a, b)``: RapydScript's list ``append`` is
+    JavaScript's ``push``, which takes several items. Only calls with two or more
+    positional arguments are touched (a Python ``append`` takes one)."""
+
+    def visit_Call(self, node: ast.Call) -> ast.AST:
+        self.generic_visit(node)
+        f = node.func
+        if isinstance(f, ast.Attribute) and f.attr == "append" and len(node.args) >= 2 \
+                and not node.keywords and not any(isinstance(a, ast.Starred)
+                                                  for a in node.args):
+            call = ast.Call(func=ast.Name("__gs_push__", ast.Load()),
+                            args=[f.value, *node.args], keywords=[])
+            return ast.copy_location(call, node)
+        return node
+
+
+def gs_push(target: Any, *items: Any) -> Any:
+    """JavaScript's ``push`` for a list; anything else's own ``append``."""
+    if isinstance(target, list):
+        target.extend(items)
+        return len(target)
+    return target.append(*items)
+
+
+def _names_loaded(node: ast.AST) -> set[str]:
+    return {n.id for n in ast.walk(node) if isinstance(n, ast.Name)
+            and isinstance(n.ctx, ast.Load)}
+
+
+def _hoistable(node: ast.AST) -> bool:
+    """A top-level ``def`` whose definition needs nothing from the program (no
+    decorators, constant defaults), so that it can run before the code above it."""
+    if not isinstance(node, ast.FunctionDef) or node.decorator_list:
+        return False
+    defaults = node.args.defaults + [d for d in node.args.kw_defaults if d is not None]
+    return all(isinstance(d, ast.Constant) or (isinstance(d, ast.UnaryOp)
+                                              and isinstance(d.operand, ast.Constant))
+               for d in defaults)
+
+
+def hoist_functions(tree: ast.Module) -> ast.Module:
+    """JavaScript hoists function declarations: a GlowScript program may name a function
+    above its ``def`` (``button(bind=start)`` ... ``def start(b):``). Each top-level
+    function used above its definition is also defined at the top."""
+    early: list[ast.stmt] = []
+    for i, node in enumerate(tree.body):
+        if not _hoistable(node):
+            continue
+        used_above = any(node.name in _names_loaded(stmt) for stmt in tree.body[:i])
+        if used_above:
+            early.append(node)
+    if early:
+        tree.body = early + tree.body
+    return tree
+
+
+def transform(tree: ast.Module) -> ast.Module:
+    """The GlowScript leniencies CPython lacks, put into a parsed program."""
+    tree = _TextPlus().visit(tree)
+    tree = _IsLiteral().visit(tree)
+    tree = _Push().visit(tree)
+    tree = hoist_functions(tree)
+    return ast.fix_missing_locations(tree)
+
+
+_SPACES = re.compile(r"[\u00a0\u1680\u2000-\u200b\u202f\u205f\u3000\ufeff]")
+
+
+def glowscript_whitespace(source: str) -> str:
+    """GlowScript's reading of indentation: each leading tab or space is one space, and
+    Unicode spaces (pasted from a web page) are plain spaces."""
+    lines = []
+    for line in _SPACES.sub(" ", source).splitlines(keepends=True):
+        body = line.lstrip(" \t")
+        lines.append(" " * (len(line) - len(body)) + body)
+    return "".join(lines)
+
+
+def _parse_glowscript(source: str, filename: str) -> ast.Module:
+    source = strip_header(source)
+    try:
+        return ast.parse(source, filename, "exec")
+    except SyntaxError as first:      # TabError, IndentationError, U+00A0 ...
+        try:
+            return ast.parse(glowscript_whitespace(source), filename, "exec")
+        except SyntaxError:
+            raise first from None
+
+
+def compile_program(source: str, filename: str, dialect: Dialect):
+    """The program's code object for ``dialect`` (a ``SyntaxError`` is the program's)."""
+    if dialect.kind != "glowscript":
+        return compile(source, filename, "exec")
+    return compile(transform(_parse_glowscript(source, filename)), filename, "exec")
+
+
+
+#: the helpers :func:`transform` writes calls to, by the names it gives them
+HELPERS = {"__gs_add__": gs_add, "__gs_iadd__": gs_iadd, "__gs_same__": gs_same,
+           "__gs_push__": gs_push}

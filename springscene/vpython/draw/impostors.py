@@ -1,0 +1,234 @@
+"""Small spheres drawn as impostors: one point each, the true sphere found per pixel.
+
+A sphere a few pixels across drawn as a mesh costs its triangles whatever its size on
+screen: llvmpipe's set-up and binning run per triangle (about 36 ns each, single
+threaded) and, anti-aliased, hold about 60 bytes per triangle until the frame is done.
+VTK's ``vtkOpenGLSphereMapper`` draws a sphere from its centre and radius alone: a
+geometry shader turns each point into one triangle facing the camera, and the fragment
+shader casts the pixel's ray at the sphere, discards a miss, and writes the hit's depth
+and normal, which VTK's own light code then shades (so GlowScript's rules,
+:func:`~.materials.shade_as_glowscript`, apply as to a mesh).
+
+Two things make it VPython's sphere:
+
+* **Only small spheres**: those the level of detail (:func:`.renderer.sphere_slices`)
+  would draw with 16 slices or fewer (:data:`MAX_SLICES`), about 5.2 px of radius and
+  less, at the radius whose circle has the area of VPython's 30-slice outline
+  (:data:`EQUAL_AREA`). Against VPython's full mesh, % of pixels off by more than 24/255
+  on three clouds of 1,000-3,000 spheres 1-5 px across: drafted 0.041, 0.027 and 0.004
+  (the project's image tolerance is 0.05 %; the cut-down meshes drawn before: 0.03-0.50),
+  anti-aliased 0.097, 0.136 and 0.122 (meshes: 0.16-0.94; the rest is the highlight of
+  a sphere one or two pixels across, at a pixel or the next). Between
+  5.2 and 11.7 px the exact circle strays from the 30-slice outline by 0.03-0.06 px and
+  anti-aliased puts up to 0.15 % of pixels off (the lattice example: 0.055 %), so there
+  the mesh is kept, cut down to 20 or 24 slices, and over 11.7 px VPython's 30.
+* **Anti-aliased like a mesh** (:data:`COVERAGE_RULES`): VTK's shader discards whole
+  pixels, which leaves a jagged outline under MSAA. The fragment shader here tests the
+  ray of each of the pixel's samples (``interpolateAtSample``, ARB_gpu_shader5) and writes
+  the covered ones to ``gl_SampleMask`` (ARB_sample_shading), shading once per pixel as
+  MSAA shades a mesh (a pixel whose centre misses takes the outline's normal). Shaded
+  per sample instead (the first try), the highlights of small spheres came out averaged,
+  unlike a mesh's: 0.19-0.79 % of pixels off where the mask put 0.15-0.22 % (both
+  measured before the equal-area radius).
+
+Mesa's llvmpipe has both extensions (GL 4.5); a context without them keeps meshes
+(:func:`available`). Opaque, lit, non-emissive spheres of equal size along their three
+axes only (an ellipsoid, a transparent or glowing sphere keeps its mesh).
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+
+import numpy as np
+
+from .batches import Batch
+from .instanced import InstancedBatch
+from .materials import shade_as_glowscript
+from ..geometry.meshes import SPHERE_SLICES
+
+# VPython's sphere is a mesh of 30 slices with its vertices on the sphere: its outline is
+# about a 30-gon inscribed in the circle, 0.73 % smaller in area. An impostor of the radius
+# of equal area (0.9963 r) covers the pixels the mesh covers (a sphere 8 px in radius,
+# anti-aliased: coverage 201.0 px for the mesh, 202.5 for the true radius, 201.0 for this)
+EQUAL_AREA = math.sqrt(SPHERE_SLICES / (2 * math.pi) * math.sin(2 * math.pi / SPHERE_SLICES))
+MAX_SLICES = 16        # spheres drawn with this many slices or fewer become impostors
+# spheres an impostor actor draws: llvmpipe keeps every triangle of a frame binned (about
+# 300 bytes each) until it rasterises them; a chunk after the first finishes the drawing
+# before it (``WaitForCompletion``), so a frame of 100,000 impostors holds 8,192 of them,
+# not 30 MB (the same pixels: opaque spheres, the same order, the depth test decides)
+CHUNK = 8192
+EXTENSIONS = ("GL_ARB_gpu_shader5", "GL_ARB_sample_shading")
+_DECLARE = ("//VTK::System::Dec",
+            "//VTK::System::Dec\n" + "".join(f"#extension {e} : require\n" for e in EXTENSIONS))
+# in vtkOpenGLSphereMapper's fragment shader (VTK 9.5), after the pixel's ray is cast:
+# b and d are the quadratic's terms for the pixel's centre; the samples' rays are cast
+# again from their own positions on the impostor's triangle
+_COVERAGE = ("  if (d < 0.0) { discard; }", """
+  int coverage = 0;
+  for (int i = 0; i < gl_NumSamples; ++i) {
+    vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
+    vec3 sampleDir = normalize(sampleVC);
+    vec3 samplePos = vec3(0.0);
+    if (cameraParallel != 0) {
+      sampleDir = vec3(0.0, 0.0, -1.0);
+      samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
+    else if (length(sampleVC) > radiusVCVSOutput*3.0) {
+      samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
+    samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
+    float sb = 2.0*dot(samplePos, sampleDir);
+    if (sb*sb - 4.0*(dot(samplePos, samplePos) - 1.0) >= 0.0) { coverage |= (1 << i); }
+  }
+  if (coverage == 0) { discard; }
+  gl_SampleMask[0] = coverage;
+  d = max(d, 0.0);
+""")
+COVERAGE_RULES = (_COVERAGE,)
+
+_available: list[bool] = []    # one answer a process: it renders with one backend
+
+
+def available(render_window) -> bool:
+    """The OpenGL of the window (and of the process's others: one backend a process,
+    :func:`springscene.view.backend.select`) has what the impostors' shader needs; asked
+    once, the window's context made now if it is not yet."""
+    if not _available:
+        render_window.Initialize()
+        report = render_window.ReportCapabilities()
+        _available.append(all(e in report for e in EXTENSIONS))
+    return _available[0]
+
+
+def small(radius_px: np.ndarray, steps: tuple[int, ...], tolerance: float) -> np.ndarray:
+    """Which spheres of ``radius_px`` pixels the level of detail (``steps``, most
+    first, and the sagitta ``tolerance``) would draw with :data:`MAX_SLICES` slices or
+    fewer; none when it keeps one detail (:func:`.renderer.full_detail`), and none of a
+    negative radius (drawn as its mesh, scaled by its negative size)."""
+    radius_px = np.asarray(radius_px)
+    if len(steps) < 2:
+        return np.zeros(np.shape(radius_px), dtype=bool)
+    return (radius_px > 0) & (radius_px * (1 - math.cos(math.pi / MAX_SLICES)) <= tolerance)
+
+
+def round_spheres(size: np.ndarray) -> np.ndarray:
+    """Spheres whose three diameters are equal (an impostor is round)."""
+    size = np.asarray(size, dtype=float).reshape(-1, 3)
+    return (size[:, 0] == size[:, 1]) & (size[:, 1] == size[:, 2])
+
+
+def _finisher(window):
+    """An observer that finishes ``window``'s drawing so far; it holds the window weakly (a
+    strong hold would make a cycle through VTK, window to mapper to observer, that Python's
+    collector cannot see: a renderer dropped unclosed would never be freed)."""
+    ref = weakref.ref(window)
+
+    def finish(*_) -> None:
+        w = ref()
+        if w is not None:
+            w.WaitForCompletion()
+    return finish
+
+
+class SphereImpostors(Batch):
+    """Spheres of one look drawn by ``vtkOpenGLSphereMapper``: a point, a radius and a
+    colour each, :data:`CHUNK` spheres an actor (the first chunk this batch's own, the
+    others its :attr:`parts`)."""
+
+    def __init__(self, plotter, key: tuple, flush: bool = False) -> None:
+        super().__init__(plotter, key)
+        self.flush = flush              # finish the drawing so far before this chunk's
+        self.chunks: list[SphereImpostors] = []
+
+    def set_spheres(self, pos: np.ndarray, radius: np.ndarray, rgb: np.ndarray,
+                    style: dict) -> None:
+        """The spheres now: centres ``pos`` (M, 3), ``radius`` (M,), ``rgb`` (M, 3) uint8
+        (drawn at the radius of :data:`EQUAL_AREA`), in chunks of :data:`CHUNK`."""
+        starts = range(CHUNK, len(pos), CHUNK)
+        while len(self.chunks) < len(starts):
+            self.chunks.append(SphereImpostors(self.plotter, self.key, flush=True))
+        self._set_chunk(pos[:CHUNK], radius[:CHUNK], rgb[:CHUNK], style)
+        for chunk, s in zip(self.chunks, starts):
+            chunk._set_chunk(pos[s:s + CHUNK], radius[s:s + CHUNK], rgb[s:s + CHUNK], style)
+        for chunk in self.chunks[len(starts):]:
+            chunk.hide()
+        self.parts = tuple(self.chunks)
+
+    def _set_chunk(self, pos, radius, rgb, style: dict) -> None:
+        self.empty = False
+        pos = np.asarray(pos, dtype=float).reshape(-1, 3)
+        radius = (np.asarray(radius) * EQUAL_AREA).astype(np.float32)  # read as float
+        rgb = np.asarray(rgb, dtype=np.uint8).reshape(-1, 3)
+        if self.actor is not None and len(pos) == self.mesh.n_points:
+            self.mesh.points[:] = pos
+            self.mesh.GetPoints().Modified()
+            for name, values in (("radius", radius), ("rgb", rgb)):
+                arr = self.mesh.point_data[name]
+                if not np.array_equal(arr, values):
+                    arr[:] = values
+                    self.mesh.GetPointData().GetArray(name).Modified()
+            self.mesh.Modified()
+            return
+        mesh = self.pv.PolyData(pos.copy())
+        mesh.point_data["radius"] = radius.copy()
+        mesh.point_data["rgb"] = rgb.copy()
+        if self.actor is None:
+            self.mesh = mesh
+            self._new_actor(style)
+        else:
+            self.mesh.shallow_copy(mesh)
+
+    def _new_actor(self, style: dict) -> None:
+        from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy: vtk
+
+        m = vtkOpenGLSphereMapper()
+        m.SetInputData(self.mesh)
+        m.SetScaleArray("radius")
+        if self.flush:                  # the chunks before drawn (rasterised) first
+            m.AddObserver("StartEvent", _finisher(self.plotter.ren_win))
+        self._adopt(m, style)
+
+    def _shade(self) -> None:
+        shade_as_glowscript(self.actor, False)
+        shader = self.actor.GetShaderProperty()
+        shader.AddFragmentShaderReplacement(*_DECLARE[:1], True, _DECLARE[1], False)
+        for original, replacement in COVERAGE_RULES:
+            shader.AddFragmentShaderReplacement(original, False, replacement, False)
+
+
+class SphereBatch(InstancedBatch):
+    """Opaque spheres of one look: the small ones impostors (:attr:`impostors`), the
+    others instances of VPython's 30-slice mesh."""
+
+    def __init__(self, plotter, key: tuple) -> None:
+        super().__init__(plotter, key)
+        self.impostors = SphereImpostors(plotter, key)
+        self.parts = (self.impostors,)
+
+    @property
+    def no_meshes(self) -> bool:
+        """Every sphere is an impostor now: the instances' actor draws nothing."""
+        return self.own_empty
+
+    def set_spheres(self, template, template_key, pos, R, size, rgb, style,
+                    small: np.ndarray) -> None:
+        """As :meth:`set_instances`, the spheres where ``small`` drawn as impostors (``R``:
+        the frames of the others only)."""
+        big = ~small
+        self.own_empty = not big.any()
+        if self.own_empty:
+            self.empty = False
+            if self.actor is not None:
+                self.actor.SetVisibility(False)
+        else:
+            self.set_instances(template, template_key, pos[big], R, size[big], rgb[big],
+                               style)
+        if small.any():
+            self.impostors.set_spheres(pos[small], size[small, 0] / 2, rgb[small], style)
+        else:
+            self.impostors.hide()
+        self.signature = ("spheres", template_key, int(small.sum()))
+
+
+__all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres",
+           "COVERAGE_RULES", "CHUNK", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]

@@ -1,0 +1,458 @@
+"""Draw a VPython canvas off-screen, one merged mesh per kind of object.
+
+A frame costs one geometry update per batch, not one VTK call per object: every
+visible object of a kind (and opacity, shininess, emissive) is placed with one
+numpy pass (:func:`springscene.vpython.geometry.placement.place`) into one mesh whose points,
+normals and colours are rewritten in place. A batch none of whose objects changed
+is not touched. Labels are drawn over the grabbed frame (:mod:`.label_overlay`).
+
+Textured objects are batched per texture (VTK keeps one texture per actor) and
+drawn from GlowScript's textured meshes (:mod:`..geometry.textured`, :mod:`.batches`);
+triangles and quads (:mod:`..api.polygons`) are a kind of their own, coloured,
+lit and textured per vertex.
+
+Lights, camera, autoscale and shading are those of
+:class:`springscene.view.scene.Scene`, so a VPython program of the wiki scene draws
+what ``springscene render`` draws. The title and caption are the page's, around the
+canvas (:mod:`..page.layout`), not in it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import math
+from collections import defaultdict
+from typing import Iterator
+
+import numpy as np
+
+from ...view import backend, camera, window
+from ...view.scene import MULTI_SAMPLES, apply_view, grab
+from . import autoscale, label_overlay, materials
+from ..api import frames, polygons, texturing
+from ..geometry import helices, meshes, object_meshes, placement, point_meshes, textured
+from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template
+from .batches import Batch, TextureCache, TexturedBatch
+from .impostors import SphereBatch
+from .instanced import InstancedBatch
+from . import impostors
+
+# level of detail: a sphere's slices by the sagitta of its outline on screen (sphere_slices)
+SPHERE_STEPS = (meshes.SPHERE_SLICES, 24, 20, 16, 14, 12, 10, 8, 6)   # slices, most first
+SPHERE_LOD_PX = 0.1   # px: the largest sagitta of a sphere's outline
+SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
+INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
+IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
+
+
+_Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
+
+
+def sphere_slices(radius_px: float) -> int:
+    """Slices for a sphere drawn ``radius_px`` pixels across its radius: the fewest of
+    :data:`SPHERE_STEPS` whose polygon departs from the circle by at most
+    :data:`SPHERE_LOD_PX`, the helices' rule (:func:`..geometry.helices.steps_for`). VPython's
+    30 x 30 from about 11 px up (the wiki's ball is about 40 px), 10 at 2 px, 6 under a
+    pixel: a hundred thousand small spheres are then a few million triangles, not 180
+    million. The lattice example's atoms (5 to 20 px) at this detail: no pixel off by more
+    than 24/255 against full detail (the image tolerance allows 0.05 % of pixels).
+    """
+    return helices.steps_for(radius_px, SPHERE_STEPS, SPHERE_LOD_PX)
+
+
+@contextlib.contextmanager
+def full_detail() -> Iterator[None]:
+    """Within the block, helices and spheres at VPython's own detail (60 chords a coil,
+    16 sides, 30 slices) whatever their size: what the level of detail is measured
+    against (tests, ``benchmarks/``)."""
+    global SPHERE_STEPS
+    saved = helices.LOD_PX, SPHERE_STEPS
+    helices.LOD_PX, SPHERE_STEPS = 0.0, (meshes.SPHERE_SLICES,)
+    try:
+        yield
+    finally:
+        helices.LOD_PX, SPHERE_STEPS = saved
+
+
+FULL_HELICES_ANTIALIASED = True   # anti-aliased pictures keep VPython's 60 x 16 helices
+
+
+@contextlib.contextmanager
+def coarser_detail(px: float | None) -> Iterator[None]:
+    """Within the block, helices drawn with polygons that stray up to ``px`` pixels on
+    screen from the true curves (the chords and the wire's sides alike), anti-aliased
+    too (``springscene vpython --lod``): faster, and outside the image tolerance of
+    full detail (AtomicSolid at 0.3 px: 3.6x the frames/s drafted, 5.7x anti-aliased,
+    1.4 and 2.5 % of pixels off by more than 24/255). None: the default detail."""
+    global FULL_HELICES_ANTIALIASED
+    if px is None:
+        yield
+        return
+    saved = helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED
+    helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED = px, 1.0, False
+    try:
+        yield
+    finally:
+        helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED = saved
+
+
+class Renderer:
+    """Off-screen drawing of one canvas; :meth:`frame` gives the picture now.
+
+    Parameters
+    ----------
+    cv : canvas
+        The VPython canvas to draw (its size is fixed at the first frame).
+    antialias : bool
+        4x multisampling when True.
+    backend_name : str
+        "auto", "egl" or "osmesa".
+    """
+
+    def __init__(self, cv, antialias: bool = True, backend_name: str = "auto") -> None:
+        backend.select(backend_name)
+        self.cv = cv
+        self.width, self.height = int(cv.width), int(cv.height)
+        self.antialias = antialias
+        # plain VTK (no pyvista.plotting, no matplotlib); no light until scene.lights
+        pl = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
+        helices.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
+        self._transparency = materials.Transparency(pl, MULTI_SAMPLES if antialias else 0)
+        self.plotter = pl
+        self._ambient = None
+        self._batches: dict[tuple, _Batch] = {}
+        self._label_specs: list = []
+        self._lights_sig = None
+        self._background = None
+        self._textures = TextureCache()
+        self.view: camera.View | None = None
+        self._pixels = None
+
+    # -- per frame -----------------------------------------------------------------------
+
+    def frame(self) -> np.ndarray:
+        """Bring the scene up to date and return it as (height, width, 3) uint8."""
+        self.sync()
+        if self._pixels is None:
+            from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: vtk
+            self._pixels = vtkUnsignedCharArray()
+        image = grab(self.plotter.ren_win, self.width, self.height, self._pixels)
+        return label_overlay.composite(image, self._label_specs)
+
+    def sync(self) -> None:
+        """Rewrite every batch whose objects changed, then the lights and camera
+        (objects in VPython 6 frames placed in the world for the drawing)."""
+        with frames.in_world(self.cv._objects):
+            self._sync()
+
+    def _sync(self) -> None:
+        cv = self.cv
+        groups: dict[tuple, list] = defaultdict(list)
+        labels = []
+        for obj in cv._objects:
+            if not obj._visible or frames.hidden(obj):
+                continue
+            kind = obj._kind
+            if kind == "label":
+                labels.append(obj)
+                continue
+            groups[self._key(obj)].append(obj)
+        for key in [k for k in self._batches if k not in groups]:   # e.g. a faded opacity
+            self._batches.pop(key).remove()
+        # the camera first: even the first frame's objects get their level of detail (at
+        # full detail a still of 100,000 small spheres would be 96 million vertices)
+        self._place_camera()
+        for key, objs in groups.items():
+            batch = self._batches.get(key)
+            if batch is None:
+                batch = self._batches[key] = self._new_batch(key)
+            members = np.fromiter(map(id, objs), dtype=np.int64, count=len(objs))  # 8 B each
+            if batch.signature is not None \
+                    and np.array_equal(getattr(batch, "members", None), members) \
+                    and not any(o._dirty for o in objs):
+                batch.show()
+                continue
+            if key[0] in SCREEN_THINNED:    # drawn once the camera is placed, for its view
+                batch.objs, batch.view_key = objs, "to draw"
+            else:
+                self._draw(batch, key, objs)
+            batch.members = members
+            batch.show()
+            for o in objs:
+                o._dirty = False
+        ambient = tuple(self.cv.ambient.value)
+        if ambient != self._ambient:
+            if self._ambient is not None:
+                for key, batch in self._batches.items():
+                    batch.restyle(self._style(key))
+            self._ambient = ambient
+        self._transparency.sync(self._batches.values())   # GlowScript's depth peeling
+        self._sync_background()
+        self._sync_lights()
+        self._thin_for_this_view()
+        self._detail_for_this_view()
+        self._sync_labels(labels)
+
+    def _key(self, obj) -> tuple:
+        """The batch an object is drawn in: its kind and look (and texture)."""
+        kind = obj._kind
+        if kind in ("curve", "points"):
+            return self._point_key(obj)
+        if kind == "triangle":
+            return ("triangle", *polygons.look(obj), self._texture_spec(obj._texture))
+        key = (kind, float(obj._opacity), float(getattr(obj, "_drawn_shininess", obj._shininess)),
+               bool(obj._emissive))
+        spec = _texture_of(obj)
+        if spec is not None and texturing.load(spec) is not None:
+            return ("textured", *key, spec)
+        return key
+
+    @staticmethod
+    def _texture_spec(value) -> texturing.TextureSpec | None:
+        spec = texturing.spec_of(value)
+        return spec if spec is not None and texturing.load(spec) is not None else None
+
+    def _new_batch(self, key: tuple) -> _Batch:
+        spec = key[-1] if key[0] in ("textured", "triangle") else None
+        if spec is None:
+            if not self._instanced(key):
+                return _Batch(self.plotter, key)
+            spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.plotter.ren_win)
+            return (SphereBatch if spheres else InstancedBatch)(self.plotter, key)
+        texture = self._textures.get(spec.source, texturing.load(spec))
+        return TexturedBatch(self.plotter, key, texture)
+
+    @staticmethod
+    def _instanced(key: tuple) -> bool:
+        """Opaque lit template objects are drawn as instances (:mod:`.instanced`); the
+        transparent and emissive keep placed meshes (their shader rules are written for
+        VTK's plain surface shader)."""
+        return INSTANCING and key[0] in TEMPLATES and key[1] >= 1 and not key[3]
+
+    @staticmethod
+    def _point_key(obj) -> tuple:
+        look = (float(obj._shininess), bool(obj._emissive))
+        if obj._kind == "points":
+            return ("sphere-points" if obj._size_units == "world" else "points", *look)
+        return ("tube" if obj._radius > 0 else "lines", *look)
+
+    def _style(self, key: tuple) -> dict:
+        ambient = float(np.mean(self.cv.ambient.value))
+        style = {"ambient": ambient, "opacity": 1.0, "shininess": 0.6, "emissive": False}
+        if key[0] in TEMPLATES or key[0] in ("arrow", "helix", "ring", "compound"):
+            style.update(opacity=key[1], shininess=key[2], emissive=key[3])
+        elif key[0] in ("tube", "sphere-points", "lines", "points", "triangle"):
+            style.update(shininess=key[1], emissive=key[2])   # a triangle's opacity: RGBA
+        elif key[0] == "textured":
+            style.update(opacity=key[2], shininess=key[3], emissive=key[4])
+        return style
+
+    # -- geometry per kind ---------------------------------------------------------------
+
+    def _draw(self, batch: _Batch, key: tuple, objs: list) -> None:
+        kind = key[0]
+        style = self._style(key)
+        if kind in TEMPLATES:
+            self._draw_templates(batch, key, objs, style)
+        elif kind in ("lines", "points", "tube", "sphere-points"):
+            self._draw_points(batch, key, objs, style)
+        elif kind == "textured":
+            a = textured.arrays(key[1], objs, key[-1])
+            batch.set_parts(a["points"], a["normals"], a["rgb"], a["uv"], a["triangles"],
+                            a["covered"], a["signature"], style)
+        elif kind == "triangle":
+            self._draw_polygons(batch, key, objs, style)
+        elif kind == "helix":             # one vectorised mesh, detail by screen size
+            helices.draw(batch, objs, self.view, style,
+                         full=self.antialias and FULL_HELICES_ANTIALIASED)
+            batch.objs, batch.lod_view = objs, self._view_key()
+        else:
+            parts = [m for m in (kind_mesh(kind, o) for o in objs) if m is not None]
+            self._draw_meshes(batch, key, parts, style)
+
+    def _draw_templates(self, batch, key, objs, style) -> None:
+        if isinstance(batch, SphereBatch):
+            self._draw_spheres(batch, key, objs, style)
+            return
+        pos, R, size, color = placement.object_frames(objs)
+        slices = None
+        if key[0] == "sphere":      # kept to redraw at another detail for another view
+            slices, small = self._sphere_detail(pos, size)
+            batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+        template_ = template(key[0], slices)
+        if isinstance(batch, InstancedBatch):
+            batch.set_instances(template_, (key[0], slices), pos, R, size, rgb8(color), style)
+        else:
+            points, normals = placement.place(template_, pos, R, size)
+            n = len(template_.points)
+            colors = np.repeat(rgb8(color), n, axis=0)
+            signature = ("tmpl", len(objs), slices)
+            cells = None if signature == batch.signature else \
+                placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
+            batch.set(points, normals, colors, cells, signature, style)
+        if key[0] == "sphere":
+            helices.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
+
+    def _draw_spheres(self, batch, key, objs, style) -> None:
+        """Spheres, the small ones impostors: only the meshed ones' turns are found."""
+        pos, size, color = np.split(placement.xyz_array(objs, "_pos", "_size", "_color"), 3,
+                                    axis=1)
+        slices, small = self._sphere_detail(pos, size, True)
+        batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+        meshed = [o for o, s in zip(objs, small.tolist()) if not s]
+        axis, up = np.split(placement.xyz_array(meshed, "_axis", "_up"), 2, axis=1)
+        batch.set_spheres(template(key[0], slices), (key[0], slices), pos,
+                          placement.frames(axis, up), size, rgb8(color), style, small)
+        helices.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
+
+    def _draw_polygons(self, batch, key, objs, style) -> None:
+        """Triangles and quads: each vertex's own position, normal, colour and opacity."""
+        points, normals, triangles, rgba, uv = object_meshes.polygon_arrays(objs)
+        signature = ("poly", len(points), hash(triangles.tobytes()))
+        if key[-1] is not None:
+            batch.set_parts(points, normals, rgba, uv, triangles,
+                            np.ones(len(triangles), dtype=bool), signature, style)
+        else:
+            cells = None if signature == batch.signature else placement.vtk_cells(triangles)
+            batch.set(points, normals, rgba, cells, signature, style)
+
+    def _sphere_detail(self, pos: np.ndarray, size: np.ndarray,
+                       impostors_too: bool = False) -> tuple[int, np.ndarray]:
+        """Level of detail for a batch of spheres: which are drawn as impostors (small
+        and round, with ``impostors_too``), and the slices for the others' mesh, enough
+        for the largest of them on screen."""
+        v = self.view
+        if v is None:
+            return meshes.SPHERE_SLICES, np.zeros(len(pos), dtype=bool)
+        fwd = v.focal_point - v.position
+        fwd = fwd / np.linalg.norm(fwd)
+        depth = np.maximum((pos - v.position) @ fwd, v.near)
+        px_per_unit = (v.height / 2) / math.tan(v.fov / 2)
+        radius_px = size.max(axis=1) / 2 / depth * px_per_unit
+        small = np.zeros(len(pos), dtype=bool)
+        if impostors_too:
+            small = impostors.small(radius_px, SPHERE_STEPS, SPHERE_LOD_PX) \
+                & impostors.round_spheres(size)
+        meshed = radius_px[~small]
+        return sphere_slices(float(meshed.max()) if len(meshed) else 0.0), small
+
+    def _draw_meshes(self, batch, key, parts, style) -> None:
+        if not parts:
+            batch.hide()
+            return
+        offsets = np.cumsum([0] + [len(m[0]) for m in parts])
+        points = np.concatenate([m[0] for m in parts])
+        normals = np.concatenate([m[1] for m in parts])
+        colors = np.concatenate([m[3] for m in parts])
+        signature = tuple((len(m[0]), len(m[2])) for m in parts)
+        if signature == batch.signature:
+            cells = None
+        else:
+            cells = placement.vtk_cells(np.concatenate([m[2] + off
+                                                     for m, off in zip(parts, offsets)]))
+        batch.set(points, normals, colors, cells, signature, style)
+
+    def _draw_points(self, batch, key, objs, style) -> None:
+        """Points as spheres and curves as tubes (:mod:`..geometry.point_meshes`); pixel-sized points and
+        thin curves sized by the range, curves thinned on screen for this view."""
+        if key[0] in SCREEN_THINNED:
+            batch.view_key = self._view_key()
+        rng, w = self.cv._range_now(), self.width
+        parts = [point_meshes.mesh(key[0], o, self.view, rng, w) for o in objs]
+        self._draw_meshes(batch, key, [m for m in parts if m is not None], style)
+
+    def _view_key(self):
+        v = self.view
+        return None if v is None else (tuple(v.position), tuple(v.focal_point), tuple(v.up),
+                                       v.fov)
+
+    def _thin_for_this_view(self) -> None:
+        """Lines and tubes that changed, or were thinned for another camera, drawn (once)
+        for this one: their points under a pixel apart on screen merged."""
+        now = self._view_key()
+        for key, batch in self._batches.items():
+            if key[0] in SCREEN_THINNED and getattr(batch, "view_key", now) != now \
+                    and getattr(batch, "objs", None):
+                self._draw(batch, key, batch.objs)
+
+    def _detail_for_this_view(self) -> None:
+        """Spheres and helices left unchanged while the camera moved (autoscale zooming in
+        as a program runs, say) redrawn when their level of detail for this view differs
+        from the one they were drawn at."""
+        now = self._view_key()
+        for key, batch in self._batches.items():
+            lod = getattr(batch, "lod", None)
+            if lod is None or batch.lod_view == now or batch.empty:
+                continue
+            batch.lod_view = now
+            if key[0] == "sphere":      # the objects unchanged: read again, not kept
+                pos, size = np.split(placement.xyz_array(batch.objs, "_pos", "_size"), 2,
+                                     axis=1)
+                slices, small = self._sphere_detail(pos, size, isinstance(batch, SphereBatch))
+                redraw = slices != lod[0] or not np.array_equal(small, lod[1])
+                if not redraw:      # a camera now inside an opaque sphere sees its inside
+                    helices.cull_back_faces(batch, self._style(key), self.view, pos,
+                                                size.max(axis=1) / 2)
+            else:
+                redraw = helices.detail_changed(
+                    batch, self.view, self.antialias and FULL_HELICES_ANTIALIASED)
+            if redraw:
+                self._draw(batch, key, batch.objs)
+                batch.show()        # a part hidden at the last detail may be needed now
+
+    # -- the rest of the picture ---------------------------------------------------------
+
+    def _sync_background(self) -> None:
+        bg = tuple(self.cv.background.value)
+        if bg != self._background:
+            self.plotter.set_background(bg)
+            self._background = bg
+
+    def _sync_lights(self) -> None:
+        lights = [lt for lt in self.cv.lights if lt._visible]
+        sig = tuple((type(lt).__name__, tuple(lt.color.value),
+                     tuple((lt.direction if hasattr(lt, "_direction") else lt.pos).value))
+                    for lt in lights)
+        if sig == self._lights_sig:
+            return
+        self.plotter.remove_all_lights()
+        add = self.plotter.renderer.AddLight
+        for kind, colour, where in sig:
+            if kind == "distant_light":
+                add(window.scene_light(where, colour, False, focal_point=(0, 0, 0)))
+            else:
+                add(window.scene_light(where, colour, True, cone_angle=180))
+        if not sig:        # VTK draws unlit with no light at all; VPython then shows ambient
+            add(window.scene_light((0, 0, 1), (0, 0, 0), False, intensity=0.0))
+        self._lights_sig = sig
+
+    def _place_camera(self) -> None:
+        cv = self.cv
+        w, h = self.width, self.height
+        if cv._follow is not None:
+            cv._center = cv._follow.pos
+        center = np.array(cv.center.value)
+        if cv.autoscale:      # VPython's rule, at every render (:mod:`.autoscale`)
+            autoscale.update(cv)
+        rng = cv._range_now()
+        v = camera.view(center, np.array(cv.forward.value), np.array(cv.up.value), cv.fov,
+                        rng, w, h)
+        apply_view(self.plotter, v)
+        self.view = v
+
+    def _sync_labels(self, labels: list) -> None:
+        """GlowScript's 2D overlay: labels drawn over the grabbed frame (:mod:`.label_overlay`)."""
+        bg = tuple(self.cv.background.value)
+        self._label_specs = [label_overlay.spec(lab, self.view, self.width, self.height, bg)
+                             for lab in labels]
+
+    def close(self) -> None:
+        self.plotter.close()
+
+
+def _texture_of(obj) -> texturing.TextureSpec | None:
+    """The texture ``obj`` is drawn with, or None (none given, none drawable, a kind without)."""
+    value = getattr(obj, "texture", None)     # not obj.__dict__: that would make one
+    if value is None or not textured.has_layout(obj):
+        return None
+    return texturing.spec_of(value)

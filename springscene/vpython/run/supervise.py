@@ -1,0 +1,350 @@
+"""A supervised run: the user's program runs in a child process; this process owns the output.
+
+The child (:mod:`.child`, a fresh interpreter: nothing is forked after VTK or EGL is
+loaded) writes the video, the page, the graphs and ``scene.capture`` pictures into a
+private hidden folder beside ``out``; only when it reports them finished are they moved
+into place here, one ``os.replace`` each (the video last). Whatever the child does,
+the folder is removed and the run ends in one of these ways (:class:`RunEnded` carries
+the status and the one line):
+
+============================================  ====================================
+the program ends (or ``sys.exit(0)``)          the files, exit 0
+it raises                                      its own traceback, exit 1
+``sys.exit(n)``                                exit n, as Python gives
+``os._exit(n)`` before the video is finished   exit n (1 for ``os._exit(0)``)
+killed by a signal (a segfault, the OOM        exit 128 + signal
+killer's SIGKILL)
+over ``--max-memory``                          killed, exit 137 (as the OOM killer's)
+over ``--timeout``                             killed, exit 124 (as coreutils' timeout)
+a thread left running after the program ends   the files, the child killed, exit 0
+processes it started (forks, daemons)          the files, those killed (:mod:`.lineage`)
+============================================  ====================================
+
+Each abnormal ending is one line with the peak memory and the program time reached.
+While no frame comes for :data:`STALL_AFTER` s of wall clock, the reason is said (what
+``rate``/``sleep`` do to the program clock, or the program's line when it calls neither).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import glob
+import json
+import os
+import select
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+import types
+from pathlib import Path
+
+from ...errors import OutputError, ProgramError, UserError
+from .runner import ProgramResult, _check_request
+from .report import Watch, ended_line, memory_limit, parse_size, peak_of, rss_of
+
+POLL = 0.02                 # s: how often the child's memory and the clock are checked
+# the child in a process group of its own (Popen's process_group is Python 3.11's)
+_OWN_GROUP = {"process_group": 0} if sys.version_info >= (3, 11) else {"preexec_fn": os.setpgrp}
+GRACE = 5.0                 # s the child may take to exit after its report
+STALL_AFTER = 10.0          # s of wall clock without a frame before the reason is said
+STALL_AGAIN = 30.0          # s between further such lines
+EXIT_TIMEOUT = 124
+EXIT_MEMORY = 128 + signal.SIGKILL
+_ROOT = str(Path(__file__).resolve().parents[3])      # where springscene is
+
+
+class RunEnded(Exception):
+    """The run ended without its files: ``status`` is the exit status, ``str()`` the line."""
+
+    def __init__(self, status: int, line: str) -> None:
+        super().__init__(line)
+        self.status = status
+
+
+def run_supervised(program, out, *, timeout: float | None = None,
+                   max_memory: int | str | None = None, on_dialect=None,
+                   say=None, stall_after: float = STALL_AFTER, **options) -> ProgramResult:
+    """:func:`.runner.run_program`'s run in a child process (``options`` are its own,
+    but ``on_frame``). ``say(line)`` gets the diagnoses while no frame comes (default:
+    stderr). Raises :class:`RunEnded`, :class:`ProgramError` or :class:`UserError`."""
+    if options.get("on_frame") is not None:
+        raise TypeError("on_frame needs the frames in this process: use run_program")
+    options.pop("on_frame", None)
+    path, out, _, _, _ = _check_request(program, out, options.get("duration"),
+                                        options.get("frames"), options.get("fps", 50),
+                                        tuple(options.get("overlays", ())))
+    limit = memory_limit(max_memory)
+    if timeout is not None and not (timeout > 0 and timeout != float("inf")):
+        raise UserError(f"--timeout {timeout:g}: must be a number of seconds above 0")
+    watch = Watch(path, limit, timeout, stall_after, STALL_AGAIN,
+                  say or (lambda line: print(line, file=sys.stderr, flush=True)))
+    _remove_abandoned(out)
+    try:
+        # absolute: the program may change its working folder before it writes there
+        folder = Path(tempfile.mkdtemp(prefix=f"{_hidden(out)}.{os.getpid()}.", suffix=".run",
+                                       dir=os.path.abspath(out.parent or ".")))
+    except OSError as exc:
+        raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
+    try:
+        with _stop_signals():
+            request = {"program": str(path), "out": str(folder / out.name), **options,
+                       "parent_thread": threading.get_native_id()}   # (see .lineage)
+            report = _supervise(_start(request), watch, on_dialect)
+            return _finish(report, watch, folder, out)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def _hidden(out: Path) -> str:
+    """The start of the private folder's name: ``.NAME`` (cut to stay a legal name)."""
+    name = out.name
+    while len(os.fsencode(name)) > 200:
+        name = name[:-1]
+    return "." + name
+
+
+def _remove_abandoned(out: Path) -> None:
+    """The private folders of earlier runs to ``out`` whose springscene was killed outright
+    (SIGKILL leaves no chance to clean up): their process is gone, so they go too."""
+    for folder in (out.parent or Path(".")).glob(f"{glob.escape(_hidden(out))}.*.run"):
+        pid = folder.name[:-len(".run")].rsplit(".", 2)[-2]
+        if not pid.isdigit() or int(pid) == os.getpid():
+            continue
+        try:
+            os.kill(int(pid), 0)
+        except ProcessLookupError:
+            shutil.rmtree(folder, ignore_errors=True)
+        except OSError:
+            pass
+
+
+@contextlib.contextmanager
+def _stop_signals():
+    """SIGTERM and SIGHUP end the run like an error (the child killed, the folder removed,
+    exit 128 + signal) where nobody handles them already (``springscene.app.signals``
+    does for the command)."""
+    def stop(signum, frame):
+        raise RunEnded(128 + signum, f"springscene: interrupted ({signal.Signals(signum).name})")
+
+    saved = {}
+    if threading.current_thread() is threading.main_thread():
+        for signum in (signal.SIGTERM, signal.SIGHUP):
+            if signal.getsignal(signum) == signal.SIG_DFL:
+                saved[signum] = signal.signal(signum, stop)
+    try:
+        yield
+    finally:
+        for signum, handler in saved.items():
+            signal.signal(signum, handler)
+
+
+def _start(request: dict) -> subprocess.Popen:
+    """The child: a fresh interpreter in its own process group (a terminal's Ctrl-C reaches
+    this process, which ends the child), reporting on a pipe."""
+    read, write = os.pipe()
+    # not the working folder on the path (the program's own folder goes there), and this
+    # springscene found last where no installation provides it
+    code = (f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r}); "
+            "from springscene.vpython.run.child import main; sys.exit(main())")
+    try:
+        child = subprocess.Popen([sys.executable, "-c", code, str(write), str(os.getpid()),
+                                  json.dumps(request)], pass_fds=(write,), **_OWN_GROUP)
+    except BaseException:
+        os.close(read)
+        raise
+    finally:
+        os.close(write)
+    child.report_fd = read
+    return child
+
+
+def _supervise(child: subprocess.Popen, watch: Watch, on_dialect) -> dict:
+    """Read the child's reports until it has ended; its last report (or none) with its
+    exit status under ``"process_status"``. Once the child has ended, what it wrote and
+    this loop had not read yet is read to the end (a report written just before it
+    exited is not lost)."""
+    state = {"buffer": b"", "report": None}
+    fd, status = child.report_fd, None
+    try:
+        while status is None:
+            if fd is not None and select.select([fd], [], [], POLL)[0]:
+                fd = _read(fd, state, watch, on_dialect)
+            elif fd is None:
+                time.sleep(POLL)
+            status = _check(child, watch, state["report"])
+        drained = time.monotonic() + GRACE      # (bounded: not a pipe someone keeps full)
+        while fd is not None and select.select([fd], [], [], 0)[0] and \
+                time.monotonic() < drained:
+            fd = _read(fd, state, watch, on_dialect)
+    finally:
+        if fd is not None:
+            os.close(fd)
+        _kill(child)
+    return {**(state["report"] or {}), "process_status": status}
+
+
+def _read(fd: int, state: dict, watch: Watch, on_dialect) -> int | None:
+    """One read of the report pipe, its whole lines handled; None once it is closed."""
+    data = os.read(fd, 1 << 16)
+    if not data:
+        os.close(fd)
+        fd = None
+    state["buffer"] += data
+    *lines, state["buffer"] = state["buffer"].split(b"\n")
+    for message in map(_message, lines):
+        if message["kind"] == "progress":
+            if state["report"] is None:
+                watch.progress(message)
+        elif message["kind"] == "dialect":
+            watch.dialect = message["name"]
+            if on_dialect is not None:
+                on_dialect(types.SimpleNamespace(name=message["name"],
+                                                 kind=message["dialect_kind"]))
+        elif state["report"] is None:
+            state["report"] = message
+            if message.get("progress", {}).get("started"):
+                watch.progress(message["progress"])
+            watch.reported = time.monotonic()
+    return fd
+
+
+def _message(line: bytes) -> dict:
+    try:
+        message = json.loads(line)
+    except ValueError:                  # not the child's report (the program wrote there)
+        return {"kind": "progress"}
+    return message if isinstance(message, dict) and "kind" in message else {"kind": "progress"}
+
+
+def _check(child: subprocess.Popen, watch: Watch, report: dict | None) -> int | None:
+    """The child's exit status once it has ended (or been ended here), else None."""
+    pid, wait, usage = os.wait4(child.pid, os.WNOHANG)
+    if pid:
+        child.returncode = os.waitstatus_to_exitcode(wait)
+        watch.peak = max(watch.peak, usage.ru_maxrss * 1024)
+        return child.returncode
+    watch.peak = max(watch.peak, peak_of(child.pid))
+    if report is not None:
+        if report.get("threads") or time.monotonic() - watch.reported > GRACE:
+            _kill(child)        # its work is done; a thread it left would keep it forever
+            return 0
+        return None
+    rss = rss_of(child.pid)
+    if rss > watch.limit:
+        _kill(child)
+        watch.killed = ("memory", rss)
+    elif watch.timeout is not None and time.monotonic() - watch.start > watch.timeout:
+        _kill(child)
+        watch.killed = ("timeout", None)
+    else:
+        watch.check_stall()
+        return None
+    return -signal.SIGKILL
+
+
+def _kill(child: subprocess.Popen) -> None:
+    """End the child and its process group at once (what the program started in it too,
+    even when the child itself has already ended), and reap the child."""
+    try:
+        os.killpg(child.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+    if child.returncode is not None:
+        return
+    try:
+        _, wait, _ = os.wait4(child.pid, 0)
+        child.returncode = os.waitstatus_to_exitcode(wait)
+    except ChildProcessError:
+        child.returncode = -signal.SIGKILL
+
+
+def _finish(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
+    """The result when the child reported its files finished (moved into place here);
+    otherwise the error that says how the run ended."""
+    kind = report.get("kind")
+    if kind == "done":
+        return _move(report, watch, folder, out)
+    if kind == "program":
+        raise ProgramError(report["message"])
+    if kind == "user":
+        raise UserError(report["message"])
+    if kind == "oserror":                # a write that failed: named as the user's file
+        raise _output_error(report, out)
+    if kind == "interrupted":          # (a child of an older springscene)
+        raise ProgramError(f"{watch.program}: the program raised KeyboardInterrupt")
+    if kind == "internal":              # a fault in springscene: its traceback, for a report
+        print(report["message"], file=sys.stderr)
+        raise RunEnded(1, f"springscene: internal error running {watch.program} (above)")
+    if kind == "exit" and report.get("said"):
+        print(report["said"], file=sys.stderr)         # as Python prints sys.exit("...")
+    status, line = ended_line(report, watch)
+    raise RunEnded(status, line)
+
+
+def _output_error(report: dict, out: Path) -> OutputError:
+    """The child's failed write, naming the file the user asked for: a temporary
+    ``.NAME.XXXXXXXX.SUFFIX`` in the private folder is ``NAME`` beside ``out``."""
+    name = Path(report["filename"] or out.name).name
+    if name.startswith(".") and name.count(".") >= 3:
+        name = name[1:].rsplit(".", 2)[0]
+    reason = report.get("reason") or (report["strerror"] or "cannot write").lower()
+    return OutputError(reason, out.parent / name, report["errno"] or errno.EIO)
+
+
+def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
+    """The finished files from ``folder`` into ``out``'s folder, the video last."""
+    def placed(name: str | None) -> Path | None:
+        return None if name is None else out.parent / Path(name).name
+
+    # a name captured twice is one file (the last capture); the video's own name last
+    images = [p for p in dict.fromkeys(placed(p) for p in report["images"]) if p != out]
+    page = placed(report["page"])
+    targets = list(dict.fromkeys(images + ([page] if page else []))) + [out]
+    read = set(report.get("read", ()))
+    for target in targets:
+        if os.path.realpath(target) in read:
+            raise UserError(f"--out {out}: the program read {target.name}; writing there "
+                            "would overwrite it (choose another name)")
+    for target in targets:
+        if not (folder / target.name).is_file():
+            raise RunEnded(1, f"springscene: {watch.program}: the run reported "
+                              f"{target.name} finished but did not write it")
+    with _signals_held():               # all of them in place, or (SIGKILL aside) none
+        for target in targets:
+            os.replace(folder / target.name, target)
+    notes = list(report["notes"])
+    if report.get("threads"):
+        notes.append(f"the program left {_threads(report['threads'])} running after its "
+                     "end; stopped once the video was finished")
+    return ProgramResult(out, report["frames"], report["fps"], report["program_seconds"],
+                         time.monotonic() - watch.start, report["ended"],
+                         size=tuple(report["size"]) if report["size"] else None,
+                         dialect=report["dialect"], page=page, images=images, notes=notes,
+                         peak_memory=watch.peak)
+
+
+@contextlib.contextmanager
+def _signals_held():
+    """SIGINT, SIGTERM and SIGHUP held back (delivered after the block)."""
+    stops = {signal.SIGINT, signal.SIGTERM, signal.SIGHUP}
+    held = threading.current_thread() is threading.main_thread()
+    if held:
+        saved = signal.pthread_sigmask(signal.SIG_BLOCK, stops)
+    try:
+        yield
+    finally:
+        if held:
+            signal.pthread_sigmask(signal.SIG_SETMASK, saved)
+
+
+def _threads(names: list[str]) -> str:
+    shown = ", ".join(repr(n) for n in names[:3]) + (" ..." if len(names) > 3 else "")
+    return f"thread{'s' * (len(names) > 1)} {shown}"
+
+
+__all__ = ["run_supervised", "RunEnded", "parse_size", "EXIT_TIMEOUT", "EXIT_MEMORY"]
