@@ -38,6 +38,7 @@ sys.path.insert(0, str(ROOT))
 
 from springscene import config, render  # noqa: E402
 from springscene.vpython.run.runner import run_program  # noqa: E402
+from springscene.vpython.run.options import RunOptions
 
 N_SPHERES = 1000
 RADIUS = 0.1             # atoms of a crystal: small beside their spacing (1)
@@ -107,8 +108,8 @@ def batched(lod: bool = True) -> float:
 
 def wiki_program(out: Path) -> float:
     start = time.perf_counter()
-    run_program(ROOT / "examples" / "wiki_spring.py", out, duration=SECONDS, page=False,
-                canvas_only=True)
+    run_program(ROOT / "examples" / "wiki_spring.py", out,
+                RunOptions(duration=SECONDS, page=False, canvas_only=True))
     return time.perf_counter() - start
 
 
@@ -150,8 +151,8 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
     random.seed(1)
     try:
         with contextlib.nullcontext() if lod else renderer.full_detail():
-            run_program(prog, tmp / "demo.mp4", frames=DEMO_FRAMES, antialias=antialias,
-                        page=False, canvas_only=True, lod=coarse,
+            run_program(prog, tmp / "demo.mp4",
+                        RunOptions(frames=DEMO_FRAMES, antialias=antialias, page=False, canvas_only=True, lod=coarse),
                         on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
         helices.cull_back_faces = saved

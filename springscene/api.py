@@ -452,8 +452,9 @@ def run_vpython(program: str | Path, out: str | Path, *, duration: float | None 
     backend : {"auto", "egl", "osmesa"}
         The off-screen OpenGL.
     **options
-        Any other option of :func:`springscene.vpython.run.runner.run_program`
-        (``canvas_only``, ``page``, ``overlays``).
+        Any other field of :class:`springscene.vpython.run.options.RunOptions`
+        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``), or ``timeout``
+        and ``max_memory`` for the supervised run.
 
     Returns
     -------

@@ -15,6 +15,7 @@ science and drawing:
 from __future__ import annotations
 
 import json
+from typing import Callable
 from pathlib import Path
 
 import numpy as np
@@ -30,7 +31,8 @@ from .science import analysis, matter
 from .science import sweep as sweeps
 from .errors import UserError
 from .settings import Config
-from .vpython.run.runner import ProgramResult, check_lod, run_program
+from .vpython.run.options import RunOptions
+from .vpython.run.runner import ProgramResult, run_program
 from .vpython.run.supervise import run_supervised
 
 RenderStats = pipeline.RenderStats
@@ -105,17 +107,23 @@ def figures(cfg: Config, out: str | Path, *, backend: str = "auto",
 
 
 def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
+            timeout: float | None = None, max_memory: int | str | None = None,
+            on_frame: Callable | None = None, on_dialect: Callable | None = None,
             **options) -> ProgramResult:
-    """Run a VPython program headless to a video or still (options:
-    :func:`springscene.vpython.run.runner.run_program`'s). Supervised (the default), it runs
+    """Run a VPython program headless to a video or still; ``options`` are the fields of
+    :class:`springscene.vpython.run.options.RunOptions`. Supervised (the default), it runs
     in a child process that cannot leave anything behind, with ``timeout`` and
     ``max_memory`` (:func:`springscene.vpython.run.supervise.run_supervised`); otherwise in
     this process (``on_frame`` needs that)."""
-    check_lod(options.get("lod"))
-    if supervised and options.get("on_frame") is None:
-        return run_supervised(program, out, **options)
-    unsupervised = [k for k in ("timeout", "max_memory") if options.pop(k, None) is not None]
+    if "overlays" in options:
+        options["overlays"] = tuple(options["overlays"])
+    run_options = RunOptions(**options)
+    if supervised and on_frame is None:
+        return run_supervised(program, out, run_options, timeout=timeout,
+                              max_memory=max_memory, on_dialect=on_dialect)
+    unsupervised = [name for name, value in (("timeout", timeout), ("max_memory", max_memory))
+                    if value is not None]
     if unsupervised:
         raise UserError(f"{', '.join(unsupervised)}: only a supervised run has them "
                         "(not with on_frame or supervised=False)")
-    return run_program(program, out, **options)
+    return run_program(program, out, run_options, on_frame=on_frame, on_dialect=on_dialect)

@@ -26,7 +26,7 @@ from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
 from ..view.info import info
 from ..view.overlay import OVERLAYS, parse_overlays
-from ..vpython.run.runner import MAX_LOD_PX
+from ..vpython.run.options import MAX_LOD_PX
 from ..vpython.run.supervise import RunEnded
 from ..vpython.run.report import size_text
 

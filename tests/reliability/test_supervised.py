@@ -18,6 +18,7 @@ import pytest
 from conftest import ROOT, run_cli
 from springscene.errors import ProgramError
 from springscene.vpython.run.runner import ProgramExit, run_program
+from springscene.vpython.run.options import RunOptions
 from springscene.vpython.run import supervise
 from springscene.vpython.run.supervise import RunEnded, run_supervised
 from springscene.vpython.run.report import parse_size
@@ -172,8 +173,8 @@ def test_no_frame_for_a_while_says_why(tmp_path, outdir, body, why, at, monkeypa
     monkeypatch.setattr(supervise, "STALL_AGAIN", 1.0)     # (a loaded machine: VTK may
     said = []                                                # take seconds to load)
     with pytest.raises(RunEnded) as ended:
-        run_supervised(program(tmp_path, body), outdir / "x.mp4", frames=5, timeout=6,
-                       stall_after=1.5, say=said.append)
+        run_supervised(program(tmp_path, body), outdir / "x.mp4", RunOptions(frames=5),
+                       timeout=6, stall_after=1.5, say=said.append)
     assert ended.value.status == 124
     line = next((line for line in said if why in line), said)
     assert "no frame for" in line and why in line, said
@@ -233,7 +234,7 @@ def test_sizes_within_bounds_are_kept_as_given(tmp_path):
     prog = tmp_path / "ok.py"
     prog.write_text("from vpython import *\nscene.width = 8192.5\nscene.height = 1\n"
                     "scene.width = 33.7\nsphere()\n")
-    r = run_program(prog, tmp_path / "x.png", canvas_only=True, page=False)
+    r = run_program(prog, tmp_path / "x.png", RunOptions(canvas_only=True, page=False))
     assert r.size == (33, 1)
 
 
@@ -260,7 +261,7 @@ def test_a_folder_left_by_a_run_killed_outright_goes_with_the_next_run(tmp_path,
     for folder in (dead, alive):
         folder.mkdir()
         (folder / "x.png").write_bytes(b"partial")
-    run_supervised(program(tmp_path, ""), outdir / "x.png", page=False)
+    run_supervised(program(tmp_path, ""), outdir / "x.png", RunOptions(page=False))
     assert sorted(os.listdir(outdir)) == [alive.name, "x.png"]
 
 

@@ -17,6 +17,7 @@ from springscene.vpython.draw import autoscale
 from springscene.vpython.api.canvases import canvas
 from springscene.vpython.geometry.object_meshes import object_mesh
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 C = 1 / math.tan(math.pi / 6)          # cot(fov/2), fov = pi/3
 
@@ -134,7 +135,7 @@ def test_an_animation_that_goes_out_and_comes_back_keeps_its_range(tmp_path):
             rate(100)
             b.pos = vector(8*sin(pi*i/200), 0, 0)
     """))
-    run_program(prog, tmp_path / "out.png", page=False)
+    run_program(prog, tmp_path / "out.png", RunOptions(page=False))
     cv = canvas._all[0]
     b = cv._objects[0]
     assert abs(b.pos.x) < 1e-9                      # it came back

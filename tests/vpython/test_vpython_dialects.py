@@ -15,6 +15,7 @@ from conftest import ROOT, run_cli
 from springscene.vpython import api as vp
 from springscene.vpython.dialects import compiling, visual6
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 from springscene.vpython.api.vectors import vector
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
@@ -235,8 +236,9 @@ def test_x_y_z_are_pos_in_vpython6_and_own_attributes_in_vpython7(tmp_path):
 
 def _frames_of(program, tmp_path, **options) -> list[np.ndarray]:
     frames = []
-    run_program(program, tmp_path / "v.mp4", page=False, fps=10, canvas_only=True,
-                on_frame=lambda i, img: frames.append(img.astype(int)), **options)
+    run_program(program, tmp_path / "v.mp4",
+                RunOptions(page=False, fps=10, canvas_only=True, **options),
+                on_frame=lambda i, img: frames.append(img.astype(int)))
     return frames
 
 
@@ -288,7 +290,7 @@ def test_vpython6_controls_wait_for_no_one(tmp_path):
         while True:
             c.interact()
     """)
-    result = run_program(prog, tmp_path / "x.mp4", duration=1, fps=10, page=False)
+    result = run_program(prog, tmp_path / "x.mp4", RunOptions(duration=1, fps=10, page=False))
     assert (result.ended, result.frames) == ("duration", 10)
     assert any("controls.interact()" in n for n in result.notes)
 

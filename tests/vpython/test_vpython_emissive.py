@@ -25,6 +25,7 @@ import pytest
 from springscene.view import imagediff
 from springscene.vpython.draw.materials import glow_factor
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 REAL = Path(__file__).resolve().parents[1] / "baselines" / "emissive"
 
@@ -44,7 +45,7 @@ sphere(pos=vector(1.6, -1.3, 0), radius=0.8, color=color.magenta, emissive=True,
 def draw(tmp_path, source: str, name: str = "prog") -> np.ndarray:
     prog = tmp_path / f"{name}.py"
     prog.write_text(source)
-    run_program(prog, tmp_path / f"{name}.png", page=False, canvas_only=True)
+    run_program(prog, tmp_path / f"{name}.png", RunOptions(page=False, canvas_only=True))
     return iio.imread(tmp_path / f"{name}.png")[..., :3].astype(float) / 255
 
 

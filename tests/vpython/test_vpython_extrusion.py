@@ -15,6 +15,7 @@ from springscene.vpython.draw.renderer import Renderer
 from springscene.vpython.geometry.object_meshes import object_mesh
 from springscene.vpython.geometry.placement import vtk_cells
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 PROGRAMS = Path(__file__).resolve().parents[1] / "vpython_programs"
 
@@ -412,7 +413,7 @@ def test_start_and_end_faces_show_their_colours(vp):
 
 def test_program_text_and_extrusion(tmp_path):
     result = run_program(PROGRAMS / "vp7_text_extrusion.py", tmp_path / "t.png",
-                         canvas_only=True)
+                         RunOptions(canvas_only=True))
     assert result.ended == "program"
     img = iio.imread(tmp_path / "t.png")[..., :3]
     h, w = img.shape[:2]
@@ -427,7 +428,7 @@ def test_program_text_and_extrusion(tmp_path):
 
 def test_program_shapes_and_paths(tmp_path):
     frames = []
-    run_program(PROGRAMS / "vp7_shapes_paths.py", tmp_path / "s.mp4", frames=3,
+    run_program(PROGRAMS / "vp7_shapes_paths.py", tmp_path / "s.mp4", RunOptions(frames=3),
                 on_frame=lambda i, img: frames.append(img))
     img = frames[-1].astype(int)
     h, w = img.shape[:2]

@@ -14,6 +14,7 @@ import pytest
 
 from conftest import run_cli
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 
 def write(tmp_path, source: str, name: str = "prog.py"):
@@ -24,7 +25,7 @@ def write(tmp_path, source: str, name: str = "prog.py"):
 
 def still(tmp_path, source: str) -> np.ndarray:
     prog = write(tmp_path, source)
-    run_program(prog, tmp_path / "x.png", page=False, canvas_only=True)
+    run_program(prog, tmp_path / "x.png", RunOptions(page=False, canvas_only=True))
     return iio.imread(tmp_path / "x.png").astype(int)
 
 
@@ -116,7 +117,7 @@ def test_attach_trail_and_arrow_follow_at_each_render(tmp_path):
             rate(20)
             ball.pos = ball.pos + vector(0.1, 0, 0)
     """)
-    run_program(prog, tmp_path / "x.png", page=False)
+    run_program(prog, tmp_path / "x.png", RunOptions(page=False))
     img = iio.imread(tmp_path / "x.png").astype(int)
     cols = np.nonzero(green(img))[1]
     assert cols.min() < 320 - 150 and cols.max() > 320 + 150    # the trail from -4 to +4
@@ -148,7 +149,7 @@ def test_scene_objects_lists_no_trail_curve_as_vpython7_does(tmp_path):
         with open("{tmp_path / 'after.txt'}", "w") as f:
             f.write(" ".join(sorted(type(o).__name__ for o in scene.objects)))
     """)
-    run_program(prog, tmp_path / "x.png", page=False, canvas_only=True)
+    run_program(prog, tmp_path / "x.png", RunOptions(page=False, canvas_only=True))
     listed = (tmp_path / "objs.txt").read_text().split()
     assert listed == ["arrow", "attach_trail", "sphere", "sphere"]
     assert (tmp_path / "after.txt").read_text().split() == ["arrow", "sphere", "sphere"]
@@ -253,7 +254,7 @@ def test_glowscript_float_range_rate_below_one_and_hoisting(tmp_path):
             pass
         print(n, sqrt(-1e-17) != sqrt(-1e-17), Math.floor(2.5))
     """)
-    result = run_program(prog, tmp_path / "x.mp4", fps=10, page=False)
+    result = run_program(prog, tmp_path / "x.mp4", RunOptions(fps=10, page=False))
     assert result.program_seconds == 2.0 and result.frames == 20
     proc = run_cli("vpython", prog, "--out", tmp_path / "y.png")
     assert proc.stdout.splitlines()[0] == "34 True 2"
@@ -285,7 +286,7 @@ def test_rate_above_the_machine_runs_at_the_machines_pace(tmp_path):
             time.sleep(0.01)             # a heavy iteration: 10 ms of computing
             b.pos.x += 0.01
     """)
-    result = run_program(prog, tmp_path / "x.mp4", duration=0.5, fps=10, page=False)
+    result = run_program(prog, tmp_path / "x.mp4", RunOptions(duration=0.5, fps=10, page=False))
     assert result.ended == "duration" and result.frames == 5
     assert any("ran as fast as it goes" in n for n in result.notes)
 

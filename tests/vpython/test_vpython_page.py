@@ -16,6 +16,7 @@ import numpy as np
 
 from springscene.vpython.text import html_text
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 BG = (241, 242, 244)
 
@@ -100,7 +101,7 @@ def test_page_order_title_canvas_caption_graph(tmp_path):
 
 
 def test_canvas_only_is_the_canvas_alone(tmp_path):
-    run_program(write(tmp_path, PAGE), tmp_path / "c.png", canvas_only=True)
+    run_program(write(tmp_path, PAGE), tmp_path / "c.png", RunOptions(canvas_only=True))
     img = iio.imread(tmp_path / "c.png")
     assert img.shape == (200, 300, 3) and tuple(img[2, 2]) == (255, 255, 255)
 
@@ -109,7 +110,7 @@ def test_graph_keeps_its_place_before_its_first_point(tmp_path):
     """The first frame comes before the first plot: the graph's place is kept (blank), so
     the video's size holds the graph once it is drawn."""
     frames = []
-    run_program(write(tmp_path, PAGE), tmp_path / "p.mp4", page=False,
+    run_program(write(tmp_path, PAGE), tmp_path / "p.mp4", RunOptions(page=False),
                 on_frame=lambda i, img: frames.append(img))
     assert len({f.shape for f in frames}) == 1
     first, last = frames[0].astype(int), frames[-1].astype(int)
@@ -146,7 +147,7 @@ def test_a_canvas_resized_mid_run_is_shown_at_its_new_size(tmp_path):
         rate(10)
     """)
     frames = []
-    r = run_program(prog, tmp_path / "r.mp4", page=False,
+    r = run_program(prog, tmp_path / "r.mp4", RunOptions(page=False),
                     on_frame=lambda i, img: frames.append(img))
     assert r.frames == len(frames) >= 2 and len({f.shape for f in frames}) == 1
     def canvas_size(img):
@@ -158,7 +159,7 @@ def test_a_canvas_resized_mid_run_is_shown_at_its_new_size(tmp_path):
 
 
 def test_no_page_text_twice_and_page_named_after_the_video(tmp_path):
-    r = run_program(write(tmp_path, PAGE), tmp_path / "run.mp4", frames=2)
+    r = run_program(write(tmp_path, PAGE), tmp_path / "run.mp4", RunOptions(frames=2))
     page = (tmp_path / "run.html").read_text()
     assert r.page == tmp_path / "run.html" and not (tmp_path / "page.html").exists()
     assert page.count("<video") == 1 and "Caption one" not in page
@@ -176,7 +177,7 @@ def test_page_that_grows_is_cut_with_a_note(tmp_path):
             scene.append_to_caption("line\\n")
     """)
     frames = []
-    r = run_program(prog, tmp_path / "g.mp4", page=False,
+    r = run_program(prog, tmp_path / "g.mp4", RunOptions(page=False),
                     on_frame=lambda i, img: frames.append(img))
     assert len({f.shape for f in frames}) == 1
     assert any("the page grew" in n for n in r.notes)
@@ -196,7 +197,7 @@ def test_canvas_only_resized_mid_run_keeps_the_video_whole(tmp_path):
     """)
     import imageio_ffmpeg
 
-    r = run_program(prog, tmp_path / "r.mp4", page=False, canvas_only=True, fps=10)
+    r = run_program(prog, tmp_path / "r.mp4", RunOptions(page=False, canvas_only=True, fps=10))
     reader = imageio_ffmpeg.read_frames(str(tmp_path / "r.mp4"))
     assert next(reader)["size"] == (200, 120)
     assert sum(1 for _ in reader) == r.frames >= 6
@@ -217,7 +218,7 @@ def test_scene_capture_saves_the_canvas_alone_beside_the_output(tmp_path):
     """)
     out = tmp_path / "out"
     out.mkdir()
-    r = run_program(prog, out / "run.png", page=False)
+    r = run_program(prog, out / "run.png", RunOptions(page=False))
     snap = iio.imread(out / "snap.png")
     assert snap.shape[:2] == (120, 200)
     assert (out / "run-capture.png").exists()

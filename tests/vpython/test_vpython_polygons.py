@@ -9,6 +9,7 @@ import pytest
 
 from conftest import ROOT
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 
@@ -200,8 +201,9 @@ def test_triangles_go_into_a_compound_and_can_be_deleted(vp, renderer):
 
 def test_the_triangles_program_and_rug_like_sheets_run(tmp_path):
     frames = []
-    result = run_program(PROGRAMS / "vp7_triangles.py", tmp_path / "t.mp4", duration=0.4,
-                         fps=10, page=False, on_frame=lambda i, im: frames.append(im))
+    result = run_program(PROGRAMS / "vp7_triangles.py", tmp_path / "t.mp4",
+                         RunOptions(duration=0.4, fps=10, page=False),
+                         on_frame=lambda i, im: frames.append(im))
     assert result.frames == 4 and not result.notes
     first, last = frames[0].astype(int), frames[-1].astype(int)
     assert (first.sum(axis=2) > 60).sum() > 5000

@@ -18,6 +18,7 @@ from springscene import config, render
 from springscene.view import camera
 from springscene.vpython.api import runtime
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 EXAMPLES = ROOT / "examples"
 VP_BASELINES = BASELINES / "vpython"
@@ -39,7 +40,7 @@ def ball_of(cv_index: int = 0):
 
 def test_wiki_program_follows_simulate_bit_for_bit(tmp_path):
     seen = []
-    result = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", frames=50,
+    result = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", RunOptions(frames=50),
                          on_frame=lambda i, img: seen.append(ball_of().pos.value))
     assert (result.frames, result.ended) == (50, "frames")
     traj = render.simulate(config.load(WIKI), 1.0)
@@ -55,8 +56,9 @@ def test_wiki_program_frames_match_render(tmp_path):
     (below the title band: `still` writes the title into the picture, VPython puts it
     on the page above the canvas)."""
     images = []
-    run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", frames=2, fps=4,
-                canvas_only=True, on_frame=lambda i, img: images.append(img))
+    run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4",
+                RunOptions(frames=2, fps=4, canvas_only=True),
+                on_frame=lambda i, img: images.append(img))
     for image, name in zip(images, ("wiki_t0.00.png", "wiki_t0.25.png")):
         bad, mean = compare(image[TITLE_BAND:], iio.imread(BASELINES / name)[TITLE_BAND:, :, :3])
         assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (name, bad, mean)
@@ -82,7 +84,7 @@ def test_the_video_is_the_page_title_canvas_caption(tmp_path):
     """By default a frame is VPython's page: 8 px margins on #f1f2f4, the title above
     the canvas, the caption below; the page shows that video once and no text twice."""
     frames = []
-    r = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", frames=1,
+    r = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4", RunOptions(frames=1),
                     on_frame=lambda i, img: frames.append(img))
     img = frames[0]
     white = (img == 255).all(axis=2)            # the canvas: the wiki scene is on white
@@ -170,9 +172,9 @@ def test_program_without_rate_is_one_frame_and_png_is_the_end(tmp_path):
         b = sphere(color=color.red)
         b.pos = vector(1, 0, 0)
     """)
-    r = run_program(prog, tmp_path / "a.mp4", page=False)
+    r = run_program(prog, tmp_path / "a.mp4", RunOptions(page=False))
     assert (r.frames, r.ended) == (1, "program")
-    r = run_program(prog, tmp_path / "a.png", page=False, canvas_only=True)
+    r = run_program(prog, tmp_path / "a.png", RunOptions(page=False, canvas_only=True))
     img = iio.imread(tmp_path / "a.png")
     assert img.shape == (400, 640, 3) and r.frames == 1
     red = (img[..., 0] > 100) & (img[..., 1] < 60)
@@ -188,7 +190,7 @@ def test_a_program_that_ends_ends_the_video(tmp_path):
             rate(100)
             b.pos.x = b.pos.x + 0.01
     """)
-    r = run_program(prog, tmp_path / "a.gif", page=False)
+    r = run_program(prog, tmp_path / "a.gif", RunOptions(page=False))
     assert (r.frames, r.ended) == (15, "program")
     assert r.program_seconds == pytest.approx(0.30)
 
@@ -420,7 +422,8 @@ EXAMPLE_STILLS = [("projectile", None), ("bounce", 1.5), ("lattice", 0.3),
 
 @pytest.mark.parametrize("name, duration", EXAMPLE_STILLS, ids=[n for n, _ in EXAMPLE_STILLS])
 def test_example_stills(tmp_path, regen, name, duration):
-    r = run_program(EXAMPLES / f"{name}.py", tmp_path / f"{name}.png", duration=duration)
+    r = run_program(EXAMPLES / f"{name}.py", tmp_path / f"{name}.png",
+                    RunOptions(duration=duration))
     check(iio.imread(tmp_path / f"{name}.png"), VP_BASELINES / f"{name}.png", regen)
     for image in r.images:                      # graphs: matplotlib, pinned, deterministic
         check(iio.imread(image)[..., :3], VP_BASELINES / image.name, regen)
@@ -506,7 +509,7 @@ def test_waits_in_a_loop_end_with_the_video(tmp_path):
             ev = scene.waitfor("click")
             sphere(pos=ev.pos)
     """)
-    r = run_program(prog, tmp_path / "x.mp4", duration=0.2, page=False)
+    r = run_program(prog, tmp_path / "x.mp4", RunOptions(duration=0.2, page=False))
     assert (r.frames, r.ended) == (10, "duration")
 
 
@@ -520,5 +523,5 @@ def test_visual_and_module_imports_and_a_second_run_reimports_local_modules(tmp_
         display  # VPython 6's name for a canvas
     """)
     for _ in range(2):
-        run_program(prog, tmp_path / "x.png", page=False, canvas_only=True)
+        run_program(prog, tmp_path / "x.png", RunOptions(page=False, canvas_only=True))
         assert tuple(iio.imread(tmp_path / "x.png")[5, 5]) == (255, 255, 255)

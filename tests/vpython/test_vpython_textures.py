@@ -17,6 +17,7 @@ from springscene.vpython.geometry.meshes import (LEFT, RIGHT, SIDES, ring, textu
                                                  textured_pyramid, textured_sphere)
 from springscene.vpython.api.texturing import TextureSpec, spec_of, transform_uv
 from springscene.vpython.run.runner import run_program
+from springscene.vpython.run.options import RunOptions
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 
@@ -309,7 +310,7 @@ def test_an_unknown_url_is_noted_and_the_object_still_drawn(tmp_path):
         b = box(texture="https://example.com/bricks.jpg", color=color.orange)
         print(b.texture)
     """))
-    result = run_program(prog, tmp_path / "p.png", page=False)
+    result = run_program(prog, tmp_path / "p.png", RunOptions(page=False))
     assert any("https://example.com/bricks.jpg" in n and "no network" in n for n in result.notes)
     img = iio.imread(tmp_path / "p.png").astype(int)
     orange = (img[..., 0] > 150) & (img[..., 1] > 60) & (img[..., 2] < 40)
@@ -328,8 +329,8 @@ def test_textures_change_with_the_object_and_go_away_with_none(vp):
 
 
 def test_the_earth_and_moon_program(tmp_path):
-    result = run_program(PROGRAMS / "vp7_textured_earth.py", tmp_path / "e.png", duration=1,
-                         page=False)
+    result = run_program(PROGRAMS / "vp7_textured_earth.py", tmp_path / "e.png",
+                         RunOptions(duration=1, page=False))
     img = iio.imread(tmp_path / "e.png").astype(int)
     r, g, b = img[..., 0], img[..., 1], img[..., 2]
     assert ((b > r + 40) & (b > 80)).sum() > 200          # oceans

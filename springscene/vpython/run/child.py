@@ -26,6 +26,7 @@ from pathlib import Path
 from ...errors import ProgramError, UserError
 from . import lineage
 from ..api import runtime
+from .options import RunOptions
 from .runner import ProgramExit, _user_traceback, run_program
 
 PROGRESS_EVERY = 0.25       # seconds of wall clock between progress reports
@@ -142,15 +143,16 @@ def _done(reporter: Reporter, result, read: set[str]) -> None:
 
 def run(reporter: Reporter, request: dict) -> None:
     """Run the request and report how it ended."""
-    program, out = request.pop("program"), request.pop("out")
-    request["overlays"] = tuple(request.get("overlays", ()))
+    program, out = request["program"], request["out"]
+    options = RunOptions(**{**request["options"],
+                            "overlays": tuple(request["options"]["overlays"])})
     read = _watch_reads(Path(out).parent.parent)     # out is in the private folder
 
     def on_frame(index: int, image) -> None:       # the parent knows where a death came
         reporter.send("progress", **progress(runtime.current(), None), taken=index + 1)
 
     try:
-        result = run_program(program, out, **request, on_frame=on_frame,
+        result = run_program(program, out, options, on_frame=on_frame,
                              on_dialect=lambda d: reporter.send("dialect", name=d.name,
                                                                 dialect_kind=d.kind))
     except ProgramExit as exc:

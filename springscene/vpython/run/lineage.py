@@ -30,12 +30,12 @@ from pathlib import Path
 
 from ...errors import ProgramError
 from ... import video
-from ..api import runtime
+from . import session
 
 PR_SET_PDEATHSIG = 1
 PR_SET_CHILD_SUBREAPER = 36
 PF_EXITING = 0x4           # a task's flag (/proc/PID/stat) from the start of its exit
-_state = {"parent": None, "thread": None, "folder": None, "pid": None}
+_state = {"parent": None, "thread": None, "folder": None, "pid": None, "copy": False}
 _ending = threading.RLock()
 _on_term = None             # the child's SIGTERM handler (a fork of the program gets Python's)
 
@@ -220,20 +220,18 @@ def end_descendants(rounds: int = 20) -> None:
 
 def guard_forks(report_fd: int) -> None:
     """From now on, a fork of this process lets go of ``report_fd`` and the encoders' pipes,
-    and ends when its program ends."""
+    and ends when its program ends (:data:`.session.program_end_hooks`)."""
     def in_copy() -> None:
         if os.getpid() == _state["pid"]:
             return
-        _state["pid"] = None                 # a copy: never the run's process again
-        try:
-            if signal.getsignal(signal.SIGTERM) is _on_term:
-                signal.signal(signal.SIGTERM, signal.SIG_DFL)   # Python's own again
-            for fd in [report_fd, *video.pipe_fds()]:
-                _to_devnull(fd)
-        finally:
-            runtime.start = _ends_copy(runtime.start)
+        _state["pid"], _state["copy"] = None, True    # a copy: never the run's process again
+        if signal.getsignal(signal.SIGTERM) is _on_term:
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)   # Python's own again
+        for fd in [report_fd, *video.pipe_fds()]:
+            _to_devnull(fd)
 
     os.register_at_fork(after_in_child=in_copy)
+    session.program_end_hooks.append(_end_if_copy)
 
 
 def _to_devnull(fd: int) -> None:
@@ -250,30 +248,27 @@ def _to_devnull(fd: int) -> None:
         os.close(null)
 
 
-def _ends_copy(start):
-    """``runtime.start`` in a fork of the program: the runner calls ``start(None)`` first
-    thing once the program has ended (however it ended); in a copy, that is the end."""
-    def start_in_copy(timeline) -> None:
-        if timeline is not None:
-            return start(timeline)
-        error = sys.exc_info()[1]
-        status = 0
-        if hasattr(error, "status"):                # sys.exit(n) (said: sys.exit("text"))
-            status = error.status
-            if getattr(error, "said", None) is not None:
-                _say(error.said)
-        elif isinstance(error, ProgramError):       # raised: its own traceback
-            status = 1
-            _say(str(error))
-        for stream in (sys.stdout, sys.stderr):
-            try:
-                stream.flush()
-            except (OSError, ValueError):
-                pass
-        atexit._run_exitfuncs()
-        os._exit(status)
-
-    return start_in_copy
+def _end_if_copy(error: BaseException | None) -> None:
+    """In a fork of the program, its end is the process's end, as Python would end it:
+    ``sys.exit(n)``'s status (and text), 1 with its traceback for an error, else 0; the
+    copy's output flushed and its exit functions run, springscene's epilogue skipped."""
+    if not _state["copy"]:                   # the run's own process
+        return
+    status = 0
+    if hasattr(error, "status"):                # sys.exit(n) (said: sys.exit("text"))
+        status = error.status
+        if getattr(error, "said", None) is not None:
+            _say(error.said)
+    elif isinstance(error, ProgramError):       # raised: its own traceback
+        status = 1
+        _say(str(error))
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):
+            pass
+    atexit._run_exitfuncs()
+    os._exit(status)
 
 
 def _say(text: str) -> None:

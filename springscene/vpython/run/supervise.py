@@ -28,6 +28,7 @@ While no frame comes for :data:`STALL_AFTER` s of wall clock, the reason is said
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import errno
 import glob
 import json
@@ -42,9 +43,11 @@ import threading
 import time
 import types
 from pathlib import Path
+from typing import Callable
 
 from ...errors import OutputError, ProgramError, UserError
-from .runner import ProgramResult, _check_request
+from .options import RunOptions, check_request
+from .runner import ProgramResult
 from .report import Watch, ended_line, memory_limit, parse_size, peak_of, rss_of
 
 POLL = 0.02                 # s: how often the child's memory and the clock are checked
@@ -66,18 +69,15 @@ class RunEnded(Exception):
         self.status = status
 
 
-def run_supervised(program, out, *, timeout: float | None = None,
-                   max_memory: int | str | None = None, on_dialect=None,
-                   say=None, stall_after: float = STALL_AFTER, **options) -> ProgramResult:
-    """:func:`.runner.run_program`'s run in a child process (``options`` are its own,
-    but ``on_frame``). ``say(line)`` gets the diagnoses while no frame comes (default:
-    stderr). Raises :class:`RunEnded`, :class:`ProgramError` or :class:`UserError`."""
-    if options.get("on_frame") is not None:
-        raise TypeError("on_frame needs the frames in this process: use run_program")
-    options.pop("on_frame", None)
-    path, out, _, _, _ = _check_request(program, out, options.get("duration"),
-                                        options.get("frames"), options.get("fps", 50),
-                                        tuple(options.get("overlays", ())))
+def run_supervised(program, out, options: RunOptions = RunOptions(), *,
+                   timeout: float | None = None, max_memory: int | str | None = None,
+                   on_dialect: Callable | None = None, say: Callable | None = None,
+                   stall_after: float = STALL_AFTER) -> ProgramResult:
+    """:func:`.runner.run_program`'s run in a child process, with ``timeout`` (seconds of
+    wall clock) and ``max_memory`` (bytes, or a size such as ``"2G"``). ``say(line)`` gets
+    the diagnoses while no frame comes (default: stderr). Raises :class:`RunEnded`,
+    :class:`ProgramError` or :class:`UserError`."""
+    path, out = check_request(program, out, options)[:2]
     limit = memory_limit(max_memory)
     if timeout is not None and not (timeout > 0 and timeout != float("inf")):
         raise UserError(f"--timeout {timeout:g}: must be a number of seconds above 0")
@@ -92,7 +92,8 @@ def run_supervised(program, out, *, timeout: float | None = None,
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
     try:
         with _stop_signals():
-            request = {"program": str(path), "out": str(folder / out.name), **options,
+            request = {"program": str(path), "out": str(folder / out.name),
+                       "options": dataclasses.asdict(options),
                        "parent_thread": threading.get_native_id()}   # (see .lineage)
             report = _supervise(_start(request), watch, on_dialect)
             return _finish(report, watch, folder, out)
