@@ -16,7 +16,7 @@ ifneq ($(WANT),$(HAVE))
 .PHONY: $(STAMP)
 endif
 
-$(STAMP): pyproject.toml app/springscene
+$(STAMP): pyproject.toml
 	@$(PYTHON) -c 'import sys; sys.exit(sys.version_info < (3, 10))' 2>/dev/null || { \
 	  echo "springscene needs Python 3.10 or newer; $(PYTHON) is" \
 	    "$$($(PYTHON) --version 2>&1 || echo missing) (choose one: make PYTHON=python3.12 ...)"; \

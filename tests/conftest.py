@@ -51,9 +51,10 @@ def wiki_cfg():
 
 
 def run_cli(*args, check=False):
-    """Run the real console entry point in a fresh process (each may pick its own backend)."""
-    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
-                          capture_output=True, text=True, timeout=600)
+    """Run the installed ``springscene`` command (the console script beside this Python) in
+    a fresh process, as a user runs it (each may pick its own backend)."""
+    proc = subprocess.run([str(Path(sys.executable).parent / "springscene"), *map(str, args)],
+                          cwd=ROOT, capture_output=True, text=True, timeout=600)
     if check and proc.returncode != 0:
         raise AssertionError(f"springscene {' '.join(map(str, args))} failed:\n{proc.stderr}")
     return proc

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import springscene
-from conftest import ROOT, WIKI
+from conftest import ROOT, WIKI, run_cli
 from springscene import api, config, jobs, results
 from springscene.app.cli import main
 from springscene.errors import UserError
@@ -130,9 +130,7 @@ def test_replace_gives_the_same_one_line_error_as_the_toml_file(tmp_path):
     assert str(from_replace.value) == str(from_file.value)
     assert str(from_replace.value) == f"{bad}: [spring] k must be > 0, got -1"
     # and the CLI prints the file's error as one line, exit 2
-    proc = subprocess.run([sys.executable, "-m", "app", "simulate", str(bad), "--out",
-                           str(tmp_path / "t.csv")], cwd=ROOT, capture_output=True, text=True,
-                          timeout=120)
+    proc = run_cli("simulate", bad, "--out", tmp_path / "t.csv")
     assert proc.returncode == 2
     assert proc.stderr == f"springscene: error: {from_file.value}\n"
 

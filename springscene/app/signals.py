@@ -1,19 +1,22 @@
-"""Stop signals: SIGINT, SIGTERM and SIGHUP stop every command alike, from the first instant.
+"""Stop signals: SIGINT, SIGTERM and SIGHUP stop every command alike.
 
-:func:`main` is the Python entry of the ``springscene`` command. It installs the handlers
-before anything else is imported (numpy, VTK), then runs :func:`springscene.app.cli.main`.
-The command itself is a POSIX sh launcher (``app/springscene``, installed beside the
-entry) that starts the interpreter with the three signals blocked, so one sent during the
-interpreter's own start-up (where Python would print a ``KeyboardInterrupt`` traceback)
-waits: :func:`main` unblocks them once the handlers are in, and a held signal is handled
-then, like any other. A signal
-raises :class:`Interrupted` (a ``KeyboardInterrupt`` carrying the signal) in the main
-thread, so the ``with``/``finally`` blocks on the way out (``outputs.atomic_path``, a
-figure set's staging folder, an encoder being closed) remove what they wrote; the command
-says ``springscene: interrupted (SIGTERM)`` on one line and exits 128 + the signal's
-number (130, 143, 129).
+:func:`main` is the ``springscene`` command (the package's console script; ``python -m
+springscene.app`` runs the same). It installs the handlers before anything else is
+imported (numpy, VTK), then runs :func:`springscene.app.cli.main`. A signal raises
+:class:`Interrupted` (a ``KeyboardInterrupt`` carrying the signal) in the main thread, so
+the ``with``/``finally`` blocks on the way out (``outputs.atomic_path``, a figure set's
+staging folder, an encoder being closed) remove what they wrote; the command says
+``springscene: interrupted (SIGTERM)`` on one line and exits 128 + the signal's number
+(130, 143, 129). Once the command has returned, a signal changes nothing.
 
-Four rules make that hold at any moment:
+A signal in the interpreter's own start-up, before :func:`main` has put its handlers in
+(some tens of ms), meets Python's defaults, with nothing written yet: SIGTERM and SIGHUP
+end the process by the signal (the shell's 143 or 129, no line); SIGINT does too, or
+prints Python's own ``KeyboardInterrupt`` traceback (130; 1 when it stops ``import site``),
+or, raised in one of importlib's callbacks, is only reported (``Exception ignored``) and
+the command runs on.
+
+From the handlers on, four rules make that hold at any moment:
 
 - **Not inside a C extension's start-up.** VTK's compiled modules import their
   dependencies from C and do not survive an exception raised in those imports (a
@@ -31,9 +34,10 @@ Four rules make that hold at any moment:
   leaves with ``os._exit``: a half-imported or half-used VTK is never finalised.
 
 A signal ignored when the process starts stays ignored (``nohup``; a shell's background
-job ignores SIGINT). A supervised child process can call :func:`install` as its first act too. A parent that
-supervises one (``springscene vpython``) is interrupted like any command: its ``finally``
-kills the child's process group and removes the child's temporary folder on the way out.
+job ignores SIGINT). A supervised child process can call :func:`install` as its first act
+too. A parent that supervises one (``springscene vpython``) is interrupted like any
+command: its ``finally`` kills the child's process group and removes the child's temporary
+folder on the way out.
 """
 
 from __future__ import annotations
@@ -200,28 +204,6 @@ def _leave(status: int) -> None:
     os._exit(status)
 
 
-def _let_in() -> None:
-    """Unblock the stop signals the launcher (``app/springscene``) held through the
-    interpreter's start-up: one that came meanwhile is delivered now, to the handlers
-    :func:`install` put in. ``SPRINGSCENE_SIGBLK`` is the mask the launcher was started with
-    (``SigBlk`` of /proc): a signal the caller had blocked itself stays blocked. Run so, the
-    process is named ``springscene`` again (``pgrep -x``, ``killall``), not ``_springscene``."""
-    before = os.environ.pop("SPRINGSCENE_SIGBLK", None)     # (not passed to children)
-    if before is None:
-        return                                              # not started by the launcher
-    try:
-        callers = int(before, 16)
-    except ValueError:
-        callers = 0
-    signal.pthread_sigmask(signal.SIG_UNBLOCK,
-                           [s for s in SIGNALS if not callers & (1 << (s - 1))])
-    try:
-        with open("/proc/self/comm", "w") as comm:
-            comm.write("springscene")
-    except OSError:
-        pass
-
-
 def _too_late() -> None:
     """The command is done: a signal from now on changes nothing. Ignored, not only left to
     the handler, so the interpreter's teardown (which puts back the default actions of the
@@ -236,7 +218,6 @@ def main(argv: list[str] | None = None) -> int:
     """The ``springscene`` command: the handlers first, then the command line."""
     install()
     try:
-        _let_in()
         # imported here, after the handlers: a signal while numpy and the command line load
         # is an Interrupted like any other
         cli = importlib.import_module("springscene.app.cli")

@@ -33,6 +33,7 @@ CHAIN = ROOT / "configs" / "chain.toml"
 BASES = {name: tomllib.loads(path.read_text()) for name, path in
          (("wiki", WIKI), ("chain", CHAIN))}
 EXAMPLES = int(os.environ.get("SPRINGSCENE_HOSTILE_EXAMPLES", "120"))
+SPRINGSCENE = str(Path(sys.executable).parent / "springscene")   # the installed command
 INFO_LINE = "written for VPython"      # the one line `vpython` prints before it runs
 
 
@@ -150,7 +151,7 @@ def test_every_command_on_a_full_disk_is_one_line_exit_1_and_leaves_nothing(
     program = tmp_path / "prog.py"
     program.write_text(PROGRAM)
     args = _commands(tiny_disk, program)[command]
-    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+    proc = subprocess.run([SPRINGSCENE, *map(str, args)], cwd=ROOT,
                           capture_output=True, text=True, timeout=300)
     lines = [line for line in proc.stderr.splitlines() if INFO_LINE not in line]
     assert proc.returncode == 1, proc.stderr
@@ -190,9 +191,8 @@ def test_a_disk_with_no_byte_free_is_one_line_exit_1_and_leaves_nothing(
                         disk / "p.png"),
         "init": (["init", "wiki.toml"], disk, "wiki.toml"),
     }[command]
-    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=cwd,
-                          capture_output=True, text=True, timeout=300,
-                          env={**os.environ, "PYTHONPATH": str(ROOT)})
+    proc = subprocess.run([SPRINGSCENE, *map(str, args)], cwd=cwd,
+                          capture_output=True, text=True, timeout=300)
     lines = [line for line in proc.stderr.splitlines() if INFO_LINE not in line]
     assert (proc.returncode, lines) == (1, [f"springscene: no space left on device writing "
                                             f"{name}"]), proc.stderr
@@ -202,9 +202,9 @@ def test_a_disk_with_no_byte_free_is_one_line_exit_1_and_leaves_nothing(
 # ---- stop signals at random moments ---------------------------------------------------
 
 SIGNALS = {"SIGINT": 130, "SIGTERM": 143, "SIGHUP": 129}
-# hundredths of a second; from 0.1 s: run as ``python -m app``, in the interpreter's own
-# first ~25 ms no code of springscene's runs yet, and a signal ends Python its default way
-# (the installed command holds them through that start-up: tests/reliability/test_launcher.py)
+# hundredths of a second; from 0.1 s: in the interpreter's own first ~25 ms no code of
+# springscene's runs yet, and a signal meets Python's defaults
+# (tests/reliability/test_command.py: a signal at any moment of start-up)
 MOMENTS = random.Random(16).sample(range(10, 250), 9)
 
 
@@ -231,7 +231,7 @@ def test_a_stop_signal_at_a_random_moment_leaves_nothing(command, sig, moment, t
         (out / "scene.png").write_bytes(b"the old set")
         (out / "figures.wiki").write_text("the old gallery")
         old = {p.name: p.read_bytes() for p in out.iterdir()}
-    proc = subprocess.Popen([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+    proc = subprocess.Popen([SPRINGSCENE, *map(str, args)], cwd=ROOT,
                             stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
     time.sleep(moment)
     proc.send_signal(getattr(signal, sig))
@@ -303,7 +303,7 @@ def test_figures_on_a_read_only_file_system_is_a_failed_write_exit_1(tmp_path, w
         if remount.returncode != 0:
             pytest.skip("cannot remount the tmpfs read-only here")
         out = disk / "figs" if where == "new folder" else disk
-        proc = subprocess.run([sys.executable, "-m", "app", "figures", str(WIKI), "--draft",
+        proc = subprocess.run([SPRINGSCENE, "figures", str(WIKI), "--draft",
                                "--out", str(out)], cwd=ROOT, capture_output=True, text=True,
                               timeout=300)
         assert (proc.returncode, proc.stderr.splitlines()) == (

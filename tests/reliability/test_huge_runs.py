@@ -110,7 +110,8 @@ def test_a_long_still_on_an_unsized_terminal_shows_its_bar(tmp_path):
     from pathlib import Path
 
     primary, secondary = pty.openpty()
-    proc = subprocess.Popen([sys.executable, "-m", "app", "still", str(WIKI), "--dt", "1e-6",
+    command = Path(sys.executable).parent / "springscene"
+    proc = subprocess.Popen([str(command), "still", str(WIKI), "--dt", "1e-6",
                              "--time", "9.9", "--out", str(tmp_path / "s.png")],
                             cwd=Path(__file__).resolve().parents[2], stdin=secondary,
                             stdout=secondary, stderr=secondary)

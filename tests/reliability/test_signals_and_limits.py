@@ -28,6 +28,7 @@ from springscene.figures import files
 
 DAMPED = ROOT / "configs" / "damped.toml"
 TIMEOUT = 120
+SPRINGSCENE = str(Path(sys.executable).parent / "springscene")   # the installed command
 
 
 def _default_signals() -> None:
@@ -39,8 +40,8 @@ def _default_signals() -> None:
 
 
 def _start(*args) -> subprocess.Popen:
-    """The command line in a fresh process, as ``python -m app`` (the console entry)."""
-    return subprocess.Popen([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+    """The installed command in a fresh process, as a user runs it."""
+    return subprocess.Popen([SPRINGSCENE, *map(str, args)], cwd=ROOT,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             preexec_fn=_default_signals)
 
@@ -328,7 +329,7 @@ def test_a_full_disk_is_one_line_and_leaves_nothing(full_disk):
 # ---- hostile inputs -------------------------------------------------------------------
 
 def _refused(*args) -> str:
-    proc = subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+    proc = subprocess.run([SPRINGSCENE, *map(str, args)], cwd=ROOT,
                           capture_output=True, text=True, timeout=60)
     assert proc.returncode == 2, proc.stderr
     line, = proc.stderr.splitlines()

@@ -23,6 +23,8 @@ from springscene.vpython.run import supervise
 from springscene.vpython.run.supervise import RunEnded, run_supervised
 from springscene.vpython.run.report import parse_size
 
+SPRINGSCENE = str(Path(sys.executable).parent / "springscene")   # the installed command
+
 TINY = "from vpython import *\nscene.width = 64\nscene.height = 48\nb = sphere()\n"
 
 
@@ -186,7 +188,7 @@ def test_no_frame_for_a_while_says_why(tmp_path, outdir, body, why, at, monkeypa
 
 def test_a_stop_signal_to_springscene_ends_the_child_and_leaves_nothing(tmp_path, outdir):
     prog = program(tmp_path, "while True:\n    sleep(0)\n")
-    proc = subprocess.Popen([sys.executable, "-m", "app", "vpython", str(prog), "--out",
+    proc = subprocess.Popen([SPRINGSCENE, "vpython", str(prog), "--out",
                              str(outdir / "x.mp4")], cwd=ROOT, stderr=subprocess.PIPE,
                             text=True)
     time.sleep(3)

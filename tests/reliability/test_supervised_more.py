@@ -21,7 +21,7 @@ from conftest import ROOT, small_disk
 from springscene.vpython.run.report import Watch, stall_line
 
 import test_supervised
-from test_supervised import program
+from test_supervised import SPRINGSCENE, program
 
 outdir = test_supervised.outdir          # the fixture: an empty output folder
 
@@ -31,7 +31,7 @@ DIALECT = "written for VPython 7"
 def run(*args, timeout: float = 120) -> subprocess.CompletedProcess:
     """springscene in a fresh process, its output streams captured: a process the program
     left holding them would keep this waiting (until ``timeout``, then the test fails)."""
-    return subprocess.run([sys.executable, "-m", "app", *map(str, args)], cwd=ROOT,
+    return subprocess.run([SPRINGSCENE, *map(str, args)], cwd=ROOT,
                           capture_output=True, text=True, timeout=timeout)
 
 
@@ -278,7 +278,7 @@ def test_springscene_killed_while_the_program_is_in_one_long_c_call_leaves_nothi
         rate(50)
         sum(range(10**11))
     """)
-    proc = subprocess.Popen([sys.executable, "-m", "app", "vpython", str(prog), "--out",
+    proc = subprocess.Popen([SPRINGSCENE, "vpython", str(prog), "--out",
                              str(outdir / "x.mp4")], cwd=ROOT, stdout=subprocess.DEVNULL,
                             stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
