@@ -128,14 +128,14 @@ def render_variants(r) -> dict:
 
 def sphere_slices(r, vp) -> tuple[float, float]:
     """Spheres alone at 30 slices and at 10 (same pixels, a ninth of the triangles)."""
-    from springscene.vpython.draw import renderer  # noqa: PLC0415  heavy: vtk, pyvista
+    from springscene.vpython.geometry.lod import LevelOfDetail  # noqa: PLC0415  heavy: vtk
 
     win = r.plotter.ren_win
     batches = {k[0]: b for k, b in r._batches.items() if b.actor is not None}
     for name, b in batches.items():
         b.actor.SetVisibility(name == "sphere")
     at30 = _best(win.Render)
-    saved, renderer.SPHERE_STEPS = renderer.SPHERE_STEPS, (10,)
+    saved, r.lod = r.lod, LevelOfDetail(sphere_steps=(10,))
     try:
         _touch(vp)
         r.sync()
@@ -143,7 +143,7 @@ def sphere_slices(r, vp) -> tuple[float, float]:
             b.actor.SetVisibility(name == "sphere")
         return at30, _best(win.Render)
     finally:
-        renderer.SPHERE_STEPS = saved
+        r.lod = saved
 
 
 def main() -> None:

@@ -24,7 +24,6 @@ Where AtomicSolid's frame goes, part by part: ``benchmarks/bench_render_cost.py`
 
 from __future__ import annotations
 
-import contextlib
 import os
 import sys
 import tempfile
@@ -87,22 +86,21 @@ def batched(lod: bool = True) -> float:
     ``lod=False`` keeps VPython's 30 x 30 spheres at every size (no level of detail).
     """
     import springscene.vpython.api as vp
-    from springscene.vpython.draw import renderer
     from springscene.vpython.draw.renderer import Renderer
+    from springscene.vpython.geometry import lod as levels
 
-    with contextlib.nullcontext() if lod else renderer.full_detail():
-        vp.reset()
-        balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
-                 for p in _grid(N_SPHERES)]
-        r = Renderer(vp.scene)
+    vp.reset()
+    balls = [vp.sphere(pos=vp.vector(*p), radius=RADIUS, color=vp.color.red)
+             for p in _grid(N_SPHERES)]
+    r = Renderer(vp.scene, lod=levels.DEFAULT if lod else levels.FULL)
+    r.frame()
+    start = time.perf_counter()
+    for _ in range(FRAMES):
+        for b in balls:
+            b.pos = b.pos + vp.vector(0, 0, 0.01)
         r.frame()
-        start = time.perf_counter()
-        for _ in range(FRAMES):
-            for b in balls:
-                b.pos = b.pos + vp.vector(0, 0, 0.01)
-            r.frame()
-        seconds = time.perf_counter() - start
-        r.close()
+    seconds = time.perf_counter() - start
+    r.close()
     return seconds
 
 
@@ -135,8 +133,8 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
     (``coarse``: helices within that many pixels, ``springscene vpython --lod``)."""
     import random
 
-    from springscene.vpython.draw import renderer
     from springscene.vpython.geometry import helices
+    from springscene.vpython.geometry import lod as levels
 
     src = program.read_text()
     if size is not None:
@@ -150,10 +148,10 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
     times: list[float] = []
     random.seed(1)
     try:
-        with contextlib.nullcontext() if lod else renderer.full_detail():
-            run_program(prog, tmp / "demo.mp4",
-                        RunOptions(frames=DEMO_FRAMES, antialias=antialias, page=False, canvas_only=True, lod=coarse),
-                        on_frame=lambda i, image: times.append(time.perf_counter()))
+        run_program(prog, tmp / "demo.mp4",
+                    RunOptions(frames=DEMO_FRAMES, antialias=antialias, page=False,
+                               canvas_only=True, lod=coarse if lod else levels.FULL),
+                    on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
         helices.cull_back_faces = saved
     steady = times[3:]

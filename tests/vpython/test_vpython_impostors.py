@@ -13,7 +13,8 @@ import numpy as np
 import pytest
 
 import springscene.vpython.api as vp
-from springscene.vpython.draw import renderer, impostors
+from springscene.vpython.draw import impostors, renderer
+from springscene.vpython.geometry import lod
 from springscene.vpython.draw.renderer import Renderer
 from springscene.vpython.draw.impostors import SphereBatch
 from springscene.vpython.draw.instanced import InstancedBatch
@@ -46,10 +47,8 @@ def _cloud(n: int, radius: float, seed: int = 1) -> None:
 
 
 def _picture(antialias: bool, full: bool = False, backend_name: str = "auto"):
-    if full:
-        with renderer.full_detail():
-            return _picture(antialias, backend_name=backend_name)
-    r = Renderer(vp.scene, antialias=antialias, backend_name=backend_name)
+    r = Renderer(vp.scene, antialias=antialias, backend_name=backend_name,
+                 lod=lod.FULL if full else lod.DEFAULT)
     r.frame()
     image = r.frame()                         # at the detail for the camera it placed
     batches = {k: b for k, b in r._batches.items() if k[0] == "sphere"}

@@ -22,9 +22,10 @@ from springscene.app import cli
 from springscene.errors import UserError
 from springscene.view import camera
 from springscene.view.geometry import HelixTube
-from springscene.vpython.draw import renderer
-from springscene.vpython.geometry import helices, object_meshes, placement
+from springscene.vpython.geometry import helices, lod, object_meshes, placement
 from springscene.vpython.draw.renderer import Renderer
+from springscene.vpython.run.options import RunOptions
+from springscene.vpython.run.supervise import run_supervised
 
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF, compare
 
@@ -86,13 +87,14 @@ def test_zero_length_helix_is_not_drawn():
 
 @pytest.mark.parametrize("radius_px, full", [(1000.0, True), (10.0, False), (2.0, False)])
 def test_steps_keep_the_sagitta_under_the_tolerance(radius_px, full):
-    n = helices.steps_for(radius_px, helices.CHORD_STEPS)
+    tol = lod.DEFAULT.helix_px
+    n = lod.steps_for(radius_px, helices.CHORD_STEPS, tol)
     assert (n == 60) == full
     if not full:
-        assert radius_px * (1 - math.cos(math.pi / n)) <= helices.LOD_PX
+        assert radius_px * (1 - math.cos(math.pi / n)) <= tol
         finer = helices.CHORD_STEPS[helices.CHORD_STEPS.index(n) - 1]
         assert n == helices.CHORD_STEPS[-1] or \
-            radius_px * (1 - math.cos(math.pi / finer)) <= helices.LOD_PX
+            radius_px * (1 - math.cos(math.pi / finer)) <= tol
 
 
 def _view(rng: float, w=900, h=600):
@@ -134,26 +136,25 @@ def test_renderer_draws_a_lattice_of_helices_in_one_batch():
     these helices (4 px in coil radius, a wire under a pixel) have edges a few
     hundredths of a pixel from full detail's, which flips whole pixels where an edge
     crosses a pixel's centre (0.13 % of them; the image tolerance is 0.05 %)."""
-    def lattice_picture():
+    def lattice_picture(level):
         vp.reset()
         vp.scene.width, vp.scene.height = 300, 200
         for i in range(12):
             for j in range(12):
                 vp.helix(pos=vp.vector(i, j, 0), axis=vp.vector(0.6, 0, 0),
                          radius=0.15, thickness=0.05, color=vp.color.orange)
-        r = Renderer(vp.scene, antialias=False)
+        r = Renderer(vp.scene, antialias=False, lod=level)
         image = r.frame()
         batches = [b for k, b in r._batches.items() if k[0] == "helix"]
         r.close()
         assert len(batches) == 1 and batches[0].signature[1][4] == 144
         return image, batches[0].signature[1][2:4]
 
-    lod, detail = lattice_picture()
+    at_detail, detail = lattice_picture(lod.DEFAULT)
     assert detail != (60, 16)
-    with renderer.full_detail():
-        full, full_detail = lattice_picture()
+    full, full_detail = lattice_picture(lod.FULL)
     assert full_detail == (60, 16)
-    bad, mean = compare(lod, full)
+    bad, mean = compare(at_detail, full)
     assert full.any() and bad <= 0.002 and mean <= MAX_MEAN_DIFF, (bad, mean)
 
 
@@ -172,7 +173,7 @@ def test_zooming_in_redraws_unchanged_objects_in_more_detail():
     r.frame()
     near = {k[0]: b.signature for k, b in r._batches.items()}
     r.close()
-    assert far["sphere"][1][1] < near["sphere"][1][1] == renderer.SPHERE_STEPS[0]
+    assert far["sphere"][1][1] < near["sphere"][1][1] == lod.SPHERE_STEPS[0]
     assert far["helix"][1][2:4] < near["helix"][1][2:4] == (60, 16)
 
 
@@ -233,8 +234,8 @@ def test_back_faces_culled_only_when_hidden():
 
 
 def test_wire_sides_take_a_share_of_the_tolerance():
-    """The wire's sides are held to LOD_PX * SIDE_SHARE (fewer sides move the specular
-    highlight, not only the outline); the coil's chords to LOD_PX."""
+    """The wire's sides are held to helix_px * side_share (fewer sides move the specular
+    highlight, not only the outline); the coil's chords to helix_px."""
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0, 0), radius=0.15,
                  thickness=0.05)
     view = _view(15.0)
@@ -242,13 +243,13 @@ def test_wire_sides_take_a_share_of_the_tolerance():
     chords, sides = helices.detail(a, np.array([0]), view)
     ppu = helices.pixels_per_unit(view, np.array([[0.2, 0, 0]]), 0.175)[0]
     wire_px, coil_px = 0.025 * ppu, 0.15 * ppu
-    tol = helices.LOD_PX * helices.SIDE_SHARE
-    assert helices.SIDE_SHARE < 1
+    tol = lod.DEFAULT.helix_px * lod.DEFAULT.side_share
+    assert lod.DEFAULT.side_share < 1
     assert wire_px * (1 - math.cos(math.pi / sides)) <= tol
     coarser = helices.SIDE_STEPS[helices.SIDE_STEPS.index(sides) + 1]
     assert wire_px * (1 - math.cos(math.pi / coarser)) > tol
-    assert (chords, sides) == (helices.steps_for(coil_px, helices.CHORD_STEPS),
-                               helices.steps_for(wire_px, helices.SIDE_STEPS, tol))
+    assert (chords, sides) == (lod.steps_for(coil_px, helices.CHORD_STEPS, lod.DEFAULT.helix_px),
+                               lod.steps_for(wire_px, helices.SIDE_STEPS, tol))
 
 
 def _lattice(n: int) -> list:
@@ -268,40 +269,34 @@ def _lattice(n: int) -> list:
     return springs
 
 
-def _lattice_picture(size, antialias: bool, detail):
-    """The 2 x 2 x 2 lattice drawn within ``detail`` (a context): its picture and its
-    helix batch's signature (the chords and sides drawn)."""
-    with detail:
-        vp.reset()
-        vp.scene.width, vp.scene.height = size
-        _lattice(2)
-        r = Renderer(vp.scene, antialias=antialias)
-        image = r.frame()
-        sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
-        r.close()
+def _lattice_picture(size, antialias: bool, level: lod.LevelOfDetail):
+    """The 2 x 2 x 2 lattice drawn at ``level``: its picture and its helix batch's
+    signature (the chords and sides drawn)."""
+    vp.reset()
+    vp.scene.width, vp.scene.height = size
+    _lattice(2)
+    r = Renderer(vp.scene, antialias=antialias, lod=level)
+    image = r.frame()
+    sig = [b.signature for k, b in r._batches.items() if k[0] == "helix"][0]
+    r.close()
     return image, sig
 
 
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 @pytest.mark.parametrize("size", [(450, 300), (300, 200)])
-def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias, monkeypatch):
+def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias):
     """AtomicSolid's springs, a few pixels thick, drawn at their level of detail: within
     the project's image tolerance of VPython's full 60 x 16 (at most 0.05 % of pixels
     off by more than 24/255, mean under 0.2); drafted with the sagitta allowed 0.3 px,
     outside it. Anti-aliased they are at full detail."""
 
-    def picture(full: bool):
-        return _lattice_picture(size, antialias,
-                                renderer.full_detail() if full else contextlib.nullcontext())
-
-    full, _ = picture(full=True)
-    lod, sig = picture(full=False)
+    full, _ = _lattice_picture(size, antialias, lod.FULL)
+    at_detail, sig = _lattice_picture(size, antialias, lod.DEFAULT)
     assert sig[1][4] == 12 and (sig[1][2:4] == (60, 16) or not antialias)
-    bad, mean = compare(lod, full)
+    bad, mean = compare(at_detail, full)
     assert bad <= MAX_BAD_FRACTION and mean <= MAX_MEAN_DIFF, (bad, mean, sig)
-    if not antialias:
-        monkeypatch.setattr(helices, "LOD_PX", 0.3)   # a looser sagitta: outside it
-        coarse, sig = picture(full=False)
+    if not antialias:                                   # a looser sagitta: outside it
+        coarse, sig = _lattice_picture(size, antialias, lod.LevelOfDetail(helix_px=0.3))
         assert sig[1][2:4] < (60, 16) and compare(coarse, full)[0] > MAX_BAD_FRACTION
 
 
@@ -334,23 +329,21 @@ COARSE_MEAN_DIFF = 1.5
 
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
-    """``springscene vpython --lod 0.3`` (:func:`renderer.coarser_detail`): AtomicSolid-like
-    springs with fewer chords and sides, anti-aliased too, the picture within the stated
-    bound of full detail but outside the image tolerance; the detail restored after."""
+    """``springscene vpython --lod 0.3`` (:func:`lod.coarser`): AtomicSolid-like springs
+    with fewer chords and sides, anti-aliased too, the picture within the stated bound of
+    full detail but outside the image tolerance."""
 
-    def picture(full: bool = False, px: float | None = None):
-        return _lattice_picture((450, 300), antialias,
-                                renderer.full_detail() if full else renderer.coarser_detail(px))
+    def picture(level):
+        return _lattice_picture((450, 300), antialias, level)
 
-    full, _ = picture(full=True)
-    coarse, sig = picture(px=0.3)
+    full, _ = picture(lod.FULL)
+    coarse, sig = picture(lod.coarser(0.3))
     chords, sides = sig[1][2:4]
     assert chords < 60 and sides < 16
     bad, mean = compare(coarse, full)
     assert MAX_BAD_FRACTION < bad <= COARSE_BAD_FRACTION and mean <= COARSE_MEAN_DIFF
-    assert (helices.LOD_PX, helices.SIDE_SHARE) == (0.03, 0.5)      # restored
-    assert renderer.FULL_HELICES_ANTIALIASED
-    _, default_sig = picture()
+    assert lod.coarser(None) is lod.DEFAULT
+    _, default_sig = picture(lod.DEFAULT)
     if antialias:
         assert default_sig[1][2:4] == (60, 16)
     else:                                   # the default's finer detail than --lod 0.3's
@@ -383,3 +376,13 @@ def test_lod_option_of_the_library_is_checked_as_the_flag(tmp_path, value):
     with pytest.raises(UserError, match="^--lod .*: the level of detail must be more than 0"):
         jobs.vpython(prog, tmp_path / "x.png", lod=value)
     assert not (tmp_path / "x.png").exists()
+
+
+def test_a_level_of_detail_reaches_the_supervised_child(tmp_path):
+    """RunOptions.lod as a LevelOfDetail (VPython's full detail) or as --lod's pixels goes
+    through the supervised child's request and draws there."""
+    prog = tmp_path / "p.py"
+    prog.write_text("from vpython import *\nhelix(radius=0.1, coils=20)\n")
+    for level in (lod.FULL, 0.3):
+        r = run_supervised(prog, tmp_path / "p.png", RunOptions(lod=level, page=False))
+        assert r.frames == 1 and (tmp_path / "p.png").stat().st_size > 0

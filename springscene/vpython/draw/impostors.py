@@ -11,7 +11,7 @@ and normal, which VTK's own light code then shades (so GlowScript's rules,
 
 Two things make it VPython's sphere:
 
-* **Only small spheres**: those the level of detail (:func:`.renderer.sphere_slices`)
+* **Only small spheres**: those the level of detail (:meth:`..geometry.lod.LevelOfDetail.sphere_slices`)
   would draw with 16 slices or fewer (:data:`MAX_SLICES`), about 5.2 px of radius and
   less, at the radius whose circle has the area of VPython's 30-slice outline
   (:data:`EQUAL_AREA`). Against VPython's full mesh, % of pixels off by more than 24/255
@@ -103,7 +103,7 @@ def available(render_window) -> bool:
 def small(radius_px: np.ndarray, steps: tuple[int, ...], tolerance: float) -> np.ndarray:
     """Which spheres of ``radius_px`` pixels the level of detail (``steps``, most
     first, and the sagitta ``tolerance``) would draw with :data:`MAX_SLICES` slices or
-    fewer; none when it keeps one detail (:func:`.renderer.full_detail`), and none of a
+    fewer; none when it keeps one detail (:data:`..geometry.lod.FULL`), and none of a
     negative radius (drawn as its mesh, scaled by its negative size)."""
     radius_px = np.asarray(radius_px)
     if len(steps) < 2:

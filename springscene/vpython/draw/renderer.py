@@ -19,10 +19,8 @@ canvas (:mod:`..page.layout`), not in it.
 
 from __future__ import annotations
 
-import contextlib
 import math
 from collections import defaultdict
-from typing import Iterator
 
 import numpy as np
 
@@ -31,69 +29,19 @@ from ...view.scene import MULTI_SAMPLES, apply_view, grab
 from . import autoscale, label_overlay, materials
 from ..api import frames, polygons, texturing
 from ..geometry import helices, meshes, object_meshes, placement, point_meshes, textured
+from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template
 from .batches import Batch, TextureCache, TexturedBatch
 from .impostors import SphereBatch
 from .instanced import InstancedBatch
 from . import impostors
 
-# level of detail: a sphere's slices by the sagitta of its outline on screen (sphere_slices)
-SPHERE_STEPS = (meshes.SPHERE_SLICES, 24, 20, 16, 14, 12, 10, 8, 6)   # slices, most first
-SPHERE_LOD_PX = 0.1   # px: the largest sagitta of a sphere's outline
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
 IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
 
 
 _Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
-
-
-def sphere_slices(radius_px: float) -> int:
-    """Slices for a sphere drawn ``radius_px`` pixels across its radius: the fewest of
-    :data:`SPHERE_STEPS` whose polygon departs from the circle by at most
-    :data:`SPHERE_LOD_PX`, the helices' rule (:func:`..geometry.helices.steps_for`). VPython's
-    30 x 30 from about 11 px up (the wiki's ball is about 40 px), 10 at 2 px, 6 under a
-    pixel: a hundred thousand small spheres are then a few million triangles, not 180
-    million. The lattice example's atoms (5 to 20 px) at this detail: no pixel off by more
-    than 24/255 against full detail (the image tolerance allows 0.05 % of pixels).
-    """
-    return helices.steps_for(radius_px, SPHERE_STEPS, SPHERE_LOD_PX)
-
-
-@contextlib.contextmanager
-def full_detail() -> Iterator[None]:
-    """Within the block, helices and spheres at VPython's own detail (60 chords a coil,
-    16 sides, 30 slices) whatever their size: what the level of detail is measured
-    against (tests, ``benchmarks/``)."""
-    global SPHERE_STEPS
-    saved = helices.LOD_PX, SPHERE_STEPS
-    helices.LOD_PX, SPHERE_STEPS = 0.0, (meshes.SPHERE_SLICES,)
-    try:
-        yield
-    finally:
-        helices.LOD_PX, SPHERE_STEPS = saved
-
-
-FULL_HELICES_ANTIALIASED = True   # anti-aliased pictures keep VPython's 60 x 16 helices
-
-
-@contextlib.contextmanager
-def coarser_detail(px: float | None) -> Iterator[None]:
-    """Within the block, helices drawn with polygons that stray up to ``px`` pixels on
-    screen from the true curves (the chords and the wire's sides alike), anti-aliased
-    too (``springscene vpython --lod``): faster, and outside the image tolerance of
-    full detail (AtomicSolid at 0.3 px: 3.6x the frames/s drafted, 5.7x anti-aliased,
-    1.4 and 2.5 % of pixels off by more than 24/255). None: the default detail."""
-    global FULL_HELICES_ANTIALIASED
-    if px is None:
-        yield
-        return
-    saved = helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED
-    helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED = px, 1.0, False
-    try:
-        yield
-    finally:
-        helices.LOD_PX, helices.SIDE_SHARE, FULL_HELICES_ANTIALIASED = saved
 
 
 class Renderer:
@@ -107,13 +55,16 @@ class Renderer:
         4x multisampling when True.
     backend_name : str
         "auto", "egl" or "osmesa".
+    lod : LevelOfDetail
+        How finely spheres and helices are drawn for the view (:mod:`..geometry.lod`).
     """
 
-    def __init__(self, cv, antialias: bool = True, backend_name: str = "auto") -> None:
+    def __init__(self, cv, antialias: bool = True, backend_name: str = "auto",
+                 lod: LevelOfDetail = DEFAULT) -> None:
         backend.select(backend_name)
         self.cv = cv
         self.width, self.height = int(cv.width), int(cv.height)
-        self.antialias = antialias
+        self.antialias, self.lod = antialias, lod
         # plain VTK (no pyvista.plotting, no matplotlib); no light until scene.lights
         pl = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
         helices.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
@@ -264,7 +215,7 @@ class Renderer:
             self._draw_polygons(batch, key, objs, style)
         elif kind == "helix":             # one vectorised mesh, detail by screen size
             helices.draw(batch, objs, self.view, style,
-                         full=self.antialias and FULL_HELICES_ANTIALIASED)
+                         full=self.lod.full_helices(self.antialias), lod=self.lod)
             batch.objs, batch.lod_view = objs, self._view_key()
         else:
             parts = [m for m in (kind_mesh(kind, o) for o in objs) if m is not None]
@@ -331,10 +282,10 @@ class Renderer:
         radius_px = size.max(axis=1) / 2 / depth * px_per_unit
         small = np.zeros(len(pos), dtype=bool)
         if impostors_too:
-            small = impostors.small(radius_px, SPHERE_STEPS, SPHERE_LOD_PX) \
+            small = impostors.small(radius_px, self.lod.sphere_steps, self.lod.sphere_px) \
                 & impostors.round_spheres(size)
         meshed = radius_px[~small]
-        return sphere_slices(float(meshed.max()) if len(meshed) else 0.0), small
+        return self.lod.sphere_slices(float(meshed.max()) if len(meshed) else 0.0), small
 
     def _draw_meshes(self, batch, key, parts, style) -> None:
         if not parts:
@@ -381,21 +332,21 @@ class Renderer:
         from the one they were drawn at."""
         now = self._view_key()
         for key, batch in self._batches.items():
-            lod = getattr(batch, "lod", None)
-            if lod is None or batch.lod_view == now or batch.empty:
+            drawn = getattr(batch, "lod", None)       # what the batch was drawn at
+            if drawn is None or batch.lod_view == now or batch.empty:
                 continue
             batch.lod_view = now
             if key[0] == "sphere":      # the objects unchanged: read again, not kept
                 pos, size = np.split(placement.xyz_array(batch.objs, "_pos", "_size"), 2,
                                      axis=1)
                 slices, small = self._sphere_detail(pos, size, isinstance(batch, SphereBatch))
-                redraw = slices != lod[0] or not np.array_equal(small, lod[1])
+                redraw = slices != drawn[0] or not np.array_equal(small, drawn[1])
                 if not redraw:      # a camera now inside an opaque sphere sees its inside
                     helices.cull_back_faces(batch, self._style(key), self.view, pos,
                                                 size.max(axis=1) / 2)
             else:
                 redraw = helices.detail_changed(
-                    batch, self.view, self.antialias and FULL_HELICES_ANTIALIASED)
+                    batch, self.view, self.lod.full_helices(self.antialias), self.lod)
             if redraw:
                 self._draw(batch, key, batch.objs)
                 batch.show()        # a part hidden at the last detail may be needed now

@@ -15,21 +15,11 @@ Two things make a lattice of springs fast:
   triangles (fixed while only points move) are tiled once;
 * level of detail: a helix a few pixels across does not need 60 chords a coil and
   16 sides. The chords and sides are the fewest (of :data:`CHORD_STEPS` and
-  :data:`SIDE_STEPS`) whose polygon departs from the true circle (the sagitta,
-  ``r (1 - cos(pi / n))``) by at most :data:`LOD_PX` pixels, for the centre line's
-  radius and the wire's radius as the nearest helix of the group is seen. Bigger
-  helices (the wiki's spring, about 30 px across) keep VPython's full 60 x 16.
-  The wire's sides get half that tolerance (:data:`SIDE_SHARE`): fewer sides move
-  the specular highlight along the wire (the normals are interpolated between
-  fewer directions), which the sagitta does not count. :data:`LOD_PX` is what keeps
-  drafted pictures within the project's image tolerance of full detail (at most
-  0.05 % of pixels off by more than 24/255), measured at the first frame, % of pixels
-  off, LOD_PX 0.1, 0.05, 0.03: the lattice example (640 x 400) 0.27, 0.06, 0.026;
-  AtomicSolid at 900 x 600 0.085, 0.025, 0. So 0.03 px, and AtomicSolid's springs
-  (about 20 px in coil radius) keep VPython's 60 chords and 16 sides. Helices a few
-  pixels across drafted at their detail still flip whole pixels where an edge moved a
-  few hundredths of a pixel across a pixel's centre (0.13 % of a lattice of 144 springs
-  4 px in coil radius). Anti-aliased pictures are drawn at full detail (:func:`detail`).
+  :data:`SIDE_STEPS`) whose polygon departs from the true circle by at most the
+  renderer's :class:`.lod.LevelOfDetail` (``helix_px``; the wire's sides a share of it),
+  for the centre line's radius and the wire's radius as the nearest helix of the group
+  is seen. Bigger helices (the wiki's spring, about 30 px across) keep VPython's full
+  60 x 16, and so do anti-aliased pictures (:func:`detail`).
 """
 
 from __future__ import annotations
@@ -40,26 +30,12 @@ import numpy as np
 
 from ...view.geometry import CHORDS_PER_COIL, TUBE_SIDES
 from . import placement
+from .lod import DEFAULT, LevelOfDetail, steps_for
 
-LOD_PX = 0.03                  # largest sagitta, in pixels, of a helix's polygons
-SIDE_SHARE = 0.5               # the wire's sides: this share of LOD_PX
 CHORD_STEPS = (CHORDS_PER_COIL, 48, 40, 32, 24, 20, 16, 12, 8, 6)   # chords per coil
 SIDE_STEPS = (TUBE_SIDES, 14, 12, 10, 8, 6, 4)        # sides of the wire (even: _bounds)
 _TEMPLATES: dict[tuple, "_Template"] = {}
 MAX_TEMPLATES = 64
-
-
-def steps_for(radius_px: float, steps: tuple[int, ...], tolerance: float = None) -> int:
-    """The fewest of ``steps`` (most first) whose polygon of that many sides around a
-    circle of ``radius_px`` pixels stays within ``tolerance`` px (:data:`LOD_PX`)."""
-    tol = LOD_PX if tolerance is None else tolerance
-    best = steps[0]
-    for n in steps:
-        if radius_px * (1 - math.cos(math.pi / n)) <= tol:
-            best = n
-        else:
-            break
-    return best
 
 
 class _Template:
@@ -174,7 +150,8 @@ def pixels_per_unit(view, points: np.ndarray, nearer: np.ndarray | float = 0.0) 
     return (view.height / 2) / math.tan(view.fov / 2) / depth
 
 
-def detail(a: dict, idx: np.ndarray, view, full: bool = False) -> tuple[int, int]:
+def detail(a: dict, idx: np.ndarray, view, full: bool = False,
+           lod: LevelOfDetail = DEFAULT) -> tuple[int, int]:
     """(chords per coil, sides) for the helices ``idx``: enough for the nearest of them
     (each taken at its end nearer the camera, less its radius). ``full`` keeps VPython's
     60 x 16 (anti-aliased pictures: fewer chords or sides moved the highlights of
@@ -187,12 +164,12 @@ def detail(a: dict, idx: np.ndarray, view, full: bool = False) -> tuple[int, int
     end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
     ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
                      pixels_per_unit(view, end, radius + wire))
-    return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS),
-            steps_for(float(np.max(wire * ppu)), SIDE_STEPS, LOD_PX * SIDE_SHARE))
+    return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS, lod.helix_px),
+            steps_for(float(np.max(wire * ppu)), SIDE_STEPS, lod.helix_px * lod.side_share))
 
 
 def mesh(objs, view=None, triangles: bool = True, full: bool = False,
-         bounds: bool = True, arrays: dict | None = None):
+         bounds: bool = True, arrays: dict | None = None, lod: LevelOfDetail = DEFAULT):
     """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
     shape signature of helices, grouped by shape (bounds zero with ``bounds=False``);
     None when none has a length. With
@@ -204,7 +181,7 @@ def mesh(objs, view=None, triangles: bool = True, full: bool = False,
         return None
     parts, start = [], 0
     for (coils, ccw), idx in _groups(a).items():
-        chords, sides = detail(a, idx, view, full)
+        chords, sides = detail(a, idx, view, full, lod)
         t = template(coils, ccw, chords, sides)
         points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
                                 a["radius"][idx], a["wire"][idx])
@@ -233,12 +210,12 @@ def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
     return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
 
 
-def draw(batch, objs, view, style, full: bool = False) -> None:
+def draw(batch, objs, view, style, full: bool = False, lod: LevelOfDetail = DEFAULT) -> None:
     """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
     or their detail change); the batch hidden when no helix has a length. Autoscale
     bounds helices by VPython's rule (:mod:`..draw.autoscale`), so no bounds are made here."""
     a = helix_arrays(objs)
-    m = mesh(objs, view, triangles=False, full=full, bounds=False, arrays=a)
+    m = mesh(objs, view, triangles=False, full=full, bounds=False, arrays=a, lod=lod)
     if m is None:
         batch.hide()
         return
@@ -257,12 +234,12 @@ def draw(batch, objs, view, style, full: bool = False) -> None:
     batch.lod = a        # :func:`detail_changed` asks again when the camera moves
 
 
-def detail_changed(batch, view, full: bool) -> bool:
+def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> bool:
     """Whether ``batch``'s helices (drawn by :func:`draw`) need another level of detail
     for ``view``: any group's chords or sides differ from those drawn."""
     a = batch.lod
     drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
-    return any(detail(a, idx, view, full) != drawn.get(shape)
+    return any(detail(a, idx, view, full, lod) != drawn.get(shape)
                for shape, idx in _groups(a).items())
 
 
@@ -322,6 +299,6 @@ def _starts(groups) -> list[int]:
     return list(np.cumsum([0] + sizes[:-1]))
 
 
-__all__ = ["cull_back_faces", "no_frustum_culler", "LOD_PX", "SIDE_SHARE", "CHORD_STEPS",
-           "SIDE_STEPS", "steps_for", "template", "place", "helix_arrays", "pixels_per_unit",
+__all__ = ["cull_back_faces", "no_frustum_culler", "CHORD_STEPS",
+           "SIDE_STEPS", "template", "place", "helix_arrays", "pixels_per_unit",
            "detail", "mesh", "draw"]

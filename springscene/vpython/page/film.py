@@ -16,6 +16,7 @@ import numpy as np
 from ...outputs import VideoWriter
 from ..api.canvases import canvas
 from ..draw.renderer import Renderer
+from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..api.graphs import graphs
 from .graph_images import GraphStrip
 from .layout import PAGE_BACKGROUND, PageLayout, fit
@@ -50,9 +51,10 @@ class Film:
 
     def __init__(self, tmp: Path | None, fps: int, overlays: tuple[str, ...], backend: str,
                  antialias: bool, on_frame, canvas_only: bool = False,
-                 quality: str = "medium") -> None:
+                 quality: str = "medium", lod: LevelOfDetail = DEFAULT) -> None:
         self.tmp, self.fps, self.overlays = tmp, fps, overlays
         self.backend, self.antialias, self.on_frame = backend, antialias, on_frame
+        self.lod = lod
         self.canvas_only, self.quality = canvas_only, quality
         self.renderers: dict[int, Renderer] = {}
         self.shown = None
@@ -76,7 +78,8 @@ class Film:
             r.close()
             r = None
         if r is None:
-            r = self.renderers[id(cv)] = Renderer(cv, self.antialias, self.backend)
+            r = self.renderers[id(cv)] = Renderer(cv, self.antialias, self.backend,
+                                                           self.lod)
         return r
 
     def _choose_canvas(self):

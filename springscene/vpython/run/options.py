@@ -15,6 +15,7 @@ from typing import NamedTuple
 
 from ...errors import UserError
 from ...outputs import VIDEO_FORMATS, check_output, check_video_fps
+from ..geometry.lod import LevelOfDetail, coarser
 
 FORMATS = VIDEO_FORMATS + (".png",)
 DEFAULT_FPS = 50
@@ -34,7 +35,9 @@ class RunOptions:
     ``osmesa``); ``antialias`` (False: ``--draft``); ``overlays`` drawn under the canvas
     (``graph``); ``page``: the HTML page beside the output; ``canvas_only``: the first
     canvas alone rather than the page; ``quality`` of the video encoding; ``lod``: helices
-    drawn within ``lod`` pixels of the true curves (None: the default detail).
+    drawn within ``lod`` pixels of the true curves (None: the default detail; a
+    :class:`~..geometry.lod.LevelOfDetail` as it is, such as ``lod.FULL``, VPython's own
+    detail, which benchmarks measure against).
     """
 
     duration: float | None = None
@@ -46,7 +49,11 @@ class RunOptions:
     page: bool = True
     canvas_only: bool = False
     quality: str = "medium"
-    lod: float | None = None
+    lod: float | LevelOfDetail | None = None
+
+    def level_of_detail(self) -> LevelOfDetail:
+        """What the renderers draw with."""
+        return self.lod if isinstance(self.lod, LevelOfDetail) else coarser(self.lod)
 
 
 class Request(NamedTuple):
@@ -83,7 +90,7 @@ def check_request(program, out, options: RunOptions) -> Request:
 def check_lod(px) -> None:
     """``lod`` (``--lod``): None, or a number of pixels more than 0 and at most
     :data:`MAX_LOD_PX`; anything else is a one-line :class:`UserError`."""
-    if px is None:
+    if px is None or isinstance(px, LevelOfDetail):
         return
     ok = isinstance(px, numbers.Real) and not isinstance(px, bool) and 0 < px <= MAX_LOD_PX
     if not ok:                               # nan fails the comparison

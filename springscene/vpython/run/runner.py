@@ -28,7 +28,7 @@ from ..api import attachments, runtime, widgets
 from ..api.canvases import CanvasSizeError, canvas
 from ..api.graphs import graphs
 from ..dialects import compiling, glowscript
-from ..draw import autoscale, renderer
+from ..draw import autoscale
 from ..page import graph_images
 from ..page.film import Film, Printed
 from ..page.html_page import write_page
@@ -120,9 +120,10 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     graph_images.reset()          # the graph figures of an earlier run in this process
     start = time.perf_counter()
     images: list[Path] = []
-    with atomic_path(out) as tmp, renderer.coarser_detail(options.lod):
+    with atomic_path(out) as tmp:
         film = Film(None if still else tmp, options.fps, options.overlays, options.backend,
-                    options.antialias, on_frame, options.canvas_only, quality=options.quality)
+                    options.antialias, on_frame, options.canvas_only, quality=options.quality,
+                    lod=options.level_of_detail())
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(options.fps, request.budget,
                                     (lambda: None) if still else film.take)
