@@ -1,4 +1,4 @@
-"""Helices batched and drawn at a level of detail by their size on screen (helix_batch).
+"""Helices batched and drawn at a level of detail by their size on screen (geometry.helices, geometry.lod).
 
 VPython's helix (primitives.js ``helix.__update``): ``coils * 60 + 1`` centre-line
 points, a 16-sided tube of radius thickness/2 (size.y/40 when 0). At full detail the

@@ -172,7 +172,7 @@ class TexturedBatch(Batch):
         super().__init__(plotter, key, texture)
         self.bare = Batch(plotter, key)
         self.parts = (self.bare,)
-        spec = key[-1]                     # the batch's TextureSpec (draw.Renderer._key)
+        spec = key[-1]                     # the batch's TextureSpec (renderer.Renderer._key)
         bump = texturing.bump_of(spec) if isinstance(spec, texturing.TextureSpec) else None
         self.bump = None if bump is None else vtk_texture(bump)
         self.frame = None if bump is None else bump_frame(spec.flipx, spec.flipy, spec.turn)
