@@ -48,14 +48,14 @@ def steps_per_frame(cfg) -> int:
 
 
 class Baseline:
-    """What the baselines share with LatticeScene: its plotter, camera, colours, title."""
+    """What the baselines share with LatticeScene: its window, camera, colours, title."""
 
     def __init__(self, cfg, system, antialias, color_range):
-        # borrow a LatticeScene for the plotter, camera and colour bar; hide its objects
+        # borrow a LatticeScene for the window, camera and colour bar; hide its objects
         self.sc = render.make_scene(cfg, system, antialias=antialias, color_range=color_range)
         self.sc.atom_actor.VisibilityOff()
         self.sc.bond_actor.VisibilityOff()
-        self.pl = self.sc.plotter
+        self.window = self.sc.window
         self.cfg, self.lo, self.hi = cfg, *color_range
         self.sites, self.held = self.sc.sites, system.fixed.copy()
         self.i, self.j = system.i, system.j
@@ -107,7 +107,7 @@ class MergedMesh(Baseline):
         a = window.mesh_actor(self.atoms)
         a.GetMapper().ScalarVisibilityOn()
         a.GetMapper().SetColorModeToDirectScalars()
-        self.pl.add_actor(a)
+        self.window.add_actor(a)
         scene._material(a, cfg.atom.color)
         # unit tube along x from -1/2 to 1/2, radius 1
         phi = 2 * np.pi * np.arange(CYLINDER_SIDES) / CYLINDER_SIDES
@@ -124,7 +124,7 @@ class MergedMesh(Baseline):
         self.bonds.point_data["Normals"] = np.zeros((s * m, 3), np.float32)
         self.bonds.GetPointData().SetActiveNormals("Normals")
         b = window.mesh_actor(self.bonds)
-        self.pl.add_actor(b)
+        self.window.add_actor(b)
         scene._material(b, cfg.bond.color)
         self.update(system)
 
@@ -164,7 +164,7 @@ class PerObject(Baseline):
         cm.SetInputData(cyl)
         cm.ScalarVisibilityOff()
         self.atom_actors, self.bond_actors, self.mats = [], [], []
-        ren = self.pl.renderer
+        ren = self.window.renderer
         for r in self.radii:
             a = vtkActor()
             a.SetMapper(mappers[r])

@@ -69,10 +69,10 @@ def naive(cfg, out: Path) -> float:
     ball_pos, ball_p = np.array(cfg.ball.pos), np.array(cfg.ball.p)
     with render.make_scene(cfg, build.system(cfg)) as scene, VideoWriter(out, cfg.render.fps,
                                                          (cfg.scene.width, cfg.scene.height)) as w:
-        pl = scene.plotter
+        win = scene.window
         material = scene.spring_actors[0].GetProperty()
         for actor in scene.spring_actors:        # the naive loop draws its own spring
-            pl.remove_actor(actor)
+            win.remove_actor(actor)
         ball = scene.ball_actors[0]
         tube = HelixTube(cfg.spring.radius, cfg.spring.thickness, cfg.spring.coils)
         frame = HelixFrame()
@@ -90,13 +90,13 @@ def naive(cfg, out: Path) -> float:
             axis = ball_pos - holder_pos           # spring.axis = ball.pos - holder.pos
             centre = tube.centerline(np.linalg.norm(axis)) @ frame.set_axis(axis).T + holder_pos
             if spring is not None:
-                pl.remove_actor(spring)
+                win.remove_actor(spring)
             spring = window.mesh_actor(pv.Spline(centre, len(centre)).tube(
                 radius=cfg.spring.thickness / 2, n_sides=16), smooth_shading=True)
-            pl.add_actor(spring)
+            win.add_actor(spring)
             spring.SetProperty(material)
             ball.SetPosition(*ball_pos)
-            w.write(scene_grab(pl.ren_win, cfg.scene.width, cfg.scene.height, buffer))
+            w.write(scene_grab(win.ren_win, cfg.scene.width, cfg.scene.height, buffer))
         w.close()
         return time.perf_counter() - start
 

@@ -81,7 +81,7 @@ def frame_parts(r, vp) -> dict:
     """sync, upload, render and readback of one frame, ms."""
     from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: vtk, pyvista
 
-    win = r.plotter.ren_win
+    win = r.window.ren_win
     buf = vtkUnsignedCharArray()
     win.Render()
     parts = {"sync": _best(lambda: (_touch(vp), r.sync())),
@@ -94,7 +94,7 @@ def frame_parts(r, vp) -> dict:
 
 def render_variants(r) -> dict:
     """Render of an unchanged scene, ms, under each change (undone after)."""
-    win = r.plotter.ren_win
+    win = r.window.ren_win
     batches = {k[0]: b for k, b in r._batches.items() if b.actor is not None}
     out = {"as drawn": _best(win.Render)}
     for name, b in batches.items():
@@ -130,7 +130,7 @@ def sphere_slices(r, vp) -> tuple[float, float]:
     """Spheres alone at 30 slices and at 10 (same pixels, a ninth of the triangles)."""
     from springscene.vpython.geometry.lod import LevelOfDetail  # noqa: PLC0415  heavy: vtk
 
-    win = r.plotter.ren_win
+    win = r.window.ren_win
     batches = {k[0]: b for k, b in r._batches.items() if b.actor is not None}
     for name, b in batches.items():
         b.actor.SetVisibility(name == "sphere")

@@ -1,7 +1,7 @@
 """The ball-and-spring model of matter drawn: atoms as sphere imposters, bonds as one object.
 
 A :class:`LatticeScene` is :class:`~springscene.view.scene.Scene`'s counterpart for a
-lattice config (:mod:`springscene.model.lattice`): the same off-screen plotter, VPython
+lattice config (:mod:`springscene.model.lattice`): the same off-screen window, VPython
 lights and material, camera and autoscale, title, clock and read-back
 (:class:`~springscene.view.scene.SceneBase`), but thousands of objects instead of three,
 so each kind is one VTK object whose arrays are rewritten in place every frame:
@@ -36,7 +36,6 @@ from ..model.lattice import Lattice
 from ..model.physics import System
 from ..settings import AtomCfg, BondCfg, CameraCfg, SceneCfg
 from ..units import si_prefix
-from . import window
 from .geometry import HelixBatch, frames_from_up, perpendicular_ups
 from .scene import SceneBase, _material, add_title, title_color
 
@@ -279,7 +278,7 @@ class LatticeScene(SceneBase):
                  backend_name: str = "auto") -> None:
         if color_by != "none" and color_range is None:
             raise ValueError(f"colouring by {color_by} needs a color_range (color_scale)")
-        pl = self._open(canvas, camera, antialias, backend_name)
+        win = self._open(canvas, camera, antialias, backend_name)
 
         lat = lattice
         self.lattice = lat
@@ -305,16 +304,17 @@ class LatticeScene(SceneBase):
 
         self._make_atoms(system, atom.color)
         self._make_bonds(system, bond, d)
-        add_title(pl, canvas)
+        add_title(win, canvas)
         self.update(system)
         self.color_bar = self._make_color_bar() if self.color_by != "none" else None
 
     def _make_atoms(self, system: System, color: Color) -> None:
         """The atoms: one point cloud, each point a sphere imposter."""
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLSphereMapper  # noqa: PLC0415  heavy: VTK
 
-        self.atoms = window.polydata(np.asarray(system.pos, np.float32))
+        self.atoms = PolyData(np.asarray(system.pos, np.float32))
         rgb = np.empty((len(system.pos), 3), np.uint8)
         rgb[:] = _to_uint8(color)
         rgb[self.held] = _to_uint8(self.held_color)
@@ -355,12 +355,13 @@ class LatticeScene(SceneBase):
         actor = vtkActor()
         actor.SetMapper(mapper)
         _material(actor, color)
-        self.plotter.add_actor(actor, name=name, pickable=False)
+        self.window.add_actor(actor, name=name, pickable=False)
         return actor
 
     # -- the bonds, by style -----------------------------------------------------------
 
     def _make_helix(self, b, radius: float, system: System) -> None:
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
@@ -373,7 +374,7 @@ class LatticeScene(SceneBase):
         self._ups = perpendicular_ups(axes)
         pts, normals = self.helix.points(system.pos[self._i], axes,
                                          frames_from_up(axes, self._ups))
-        mesh = window.polydata(pts.astype(np.float32), self.helix.faces())
+        mesh = PolyData(pts.astype(np.float32), faces=self.helix.faces())
         mesh.point_data["Normals"] = normals.astype(np.float32)
         mesh.GetPointData().SetActiveNormals("Normals")
         self.bonds = mesh
@@ -385,11 +386,12 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_cylinder(self, b, radius: float, system: System) -> None:
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
         from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: PLC0415  heavy: VTK
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLStickMapper  # noqa: PLC0415  heavy: VTK
 
         n = len(self._i)
-        sticks = window.polydata(np.zeros((n, 3), np.float32))
+        sticks = PolyData(np.zeros((n, 3), np.float32))
         scale = np.full((n, 3), radius, np.float32)
         sticks.point_data["orientation"] = np.zeros((n, 3), np.float32)
         sticks.point_data["scale"] = scale
@@ -409,19 +411,12 @@ class LatticeScene(SceneBase):
         self.bond_actor = self._add_actor(mapper, b.color, "bonds")
 
     def _make_line(self, b, radius: float, system: System) -> None:
-        from vtkmodules.vtkCommonDataModel import vtkCellArray  # noqa: PLC0415  heavy: VTK
-        from vtkmodules.util.numpy_support import numpy_to_vtkIdTypeArray  # noqa: PLC0415  heavy: VTK
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
         from vtkmodules.vtkRenderingOpenGL2 import vtkOpenGLPolyDataMapper  # noqa: PLC0415  heavy: VTK
 
-        lines = window.polydata()
+        lines = PolyData()
         lines.SetPoints(self.atoms.GetPoints())          # the atoms' own points: no update
-        n = len(self._i)
-        cells = vtkCellArray()
-        conn = np.column_stack([self._i, self._j]).ravel().astype(np.int64)
-        cells.SetData(numpy_to_vtkIdTypeArray(np.arange(0, 2 * n + 1, 2, dtype=np.int64),
-                                              deep=True),
-                      numpy_to_vtkIdTypeArray(conn, deep=True))
-        lines.SetLines(cells)
+        lines.lines = np.column_stack([np.full(len(self._i), 2), self._i, self._j]).ravel()
         self.bonds = lines
         mapper = vtkOpenGLPolyDataMapper()
         mapper.SetInputData(lines)

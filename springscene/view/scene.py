@@ -16,7 +16,8 @@ import numpy as np
 
 from ..model.physics import System
 from ..settings import BallCfg, CameraCfg, HolderCfg, SceneCfg, SpringCfg
-from . import backend, camera, window
+from . import backend, camera
+from .window import Window, mesh_actor, title_actor
 from .geometry import HelixFrame, HelixTube
 
 # VPython's lights: fixed in the world, (direction towards the light, colour).
@@ -55,15 +56,14 @@ def grab(render_window, width: int, height: int, buffer) -> np.ndarray:
     return np.ascontiguousarray(img[::-1])
 
 
-def apply_view(plotter, v: camera.View) -> None:
-    """Place a plotter's camera at a VPython :class:`~springscene.view.camera.View`."""
-    cam = plotter.renderer.GetActiveCamera()
+def apply_view(window: Window, v: camera.View) -> None:
+    """Place a window's camera at a VPython :class:`~springscene.view.camera.View`."""
+    cam = window.renderer.GetActiveCamera()
     cam.SetPosition(*v.position)
     cam.SetFocalPoint(*v.focal_point)
     cam.SetViewUp(*v.up)
     cam.SetViewAngle(math.degrees(v.fov))
     cam.SetClippingRange(v.near, v.far)
-    plotter.camera_set = True
 
 
 def title_color(background) -> str:
@@ -72,48 +72,48 @@ def title_color(background) -> str:
     return "black" if luminance > 0.5 else "white"
 
 
-def new_plotter(canvas: SceneCfg, antialias: bool = True) -> window.Window:
+def new_window(canvas: SceneCfg, antialias: bool = True) -> Window:
     """An off-screen window of the canvas's size and background, lit by VPython's :data:`LIGHTS`.
 
     4x multisampling when ``antialias``. The backend must have been chosen
     (:func:`springscene.view.backend.select`). Plain VTK (:mod:`springscene.view.window`):
     no ``pyvista.plotting``, no matplotlib.
     """
-    return window.Window((canvas.width, canvas.height), canvas.background,
-                         MULTI_SAMPLES if antialias else 0, LIGHTS)
+    return Window((canvas.width, canvas.height), canvas.background,
+                  MULTI_SAMPLES if antialias else 0, LIGHTS)
 
 
-def add_title(plotter, canvas: SceneCfg) -> None:
+def add_title(window: Window, canvas: SceneCfg) -> None:
     """The canvas's title centred along the top edge (no text when it is blank)."""
     if canvas.title.strip():
-        plotter.add_actor(window.title_actor(canvas.title.strip(), TITLE_FONT_SIZE,
-                                             TITLE_RGB[title_color(canvas.background)]),
-                          name="title", pickable=False)
+        window.add_actor(title_actor(canvas.title.strip(), TITLE_FONT_SIZE,
+                                     TITLE_RGB[title_color(canvas.background)]),
+                         name="title", pickable=False)
 
 
 class SceneBase:
-    """What every off-screen scene shares: the plotter, VPython's camera and autoscale,
+    """What every off-screen scene shares: the window, VPython's camera and autoscale,
     the read-back, the clock. A subclass draws its objects, calls :meth:`_open` first and
     :meth:`_place_camera` from its ``update``, and gives :meth:`object_bounds`."""
 
     canvas: SceneCfg
     camera: CameraCfg
-    plotter = None
+    window: Window | None = None
     view: camera.View | None = None
     _range: float | None = None
     _pixels = None
 
     def _open(self, canvas: SceneCfg, camera_cfg: CameraCfg, antialias: bool,
               backend_name: str):
-        """Choose the backend and make the plotter; returns it."""
+        """Choose the backend and make the window; returns it."""
         backend.select(backend_name)
         self.canvas, self.camera = canvas, camera_cfg
-        self.plotter = new_plotter(canvas, antialias)
+        self.window = new_window(canvas, antialias)
         self._autoscale = camera.Autoscaler()
         self.view = None
         self._range = None
         self._pixels = None
-        return self.plotter
+        return self.window
 
     def object_bounds(self, system: System) -> np.ndarray:
         """Axis-aligned bounds (n, 2, 3) of every object, for autoscale."""
@@ -134,7 +134,7 @@ class SceneBase:
         if self.view is not None and rng == self._range:
             return
         v = camera.view(c.center, c.forward, c.up, c.fov, rng, w, h)
-        apply_view(self.plotter, v)
+        apply_view(self.window, v)
         self.view, self._range = v, rng
 
     def frame(self) -> np.ndarray:
@@ -143,7 +143,7 @@ class SceneBase:
             from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: VTK
 
             self._pixels = vtkUnsignedCharArray()
-        return grab(self.plotter.ren_win, self.canvas.width, self.canvas.height,
+        return grab(self.window.ren_win, self.canvas.width, self.canvas.height,
                     self._pixels)
 
     _clock = None            # the clock's text actor, added by the first set_clock()
@@ -170,12 +170,12 @@ class SceneBase:
             prop.SetVerticalJustificationToTop()
             actor.SetPosition(self.CLOCK_MARGIN, self.canvas.height
                               - (self.CLOCK_MARGIN if top is None else top))
-            self.plotter.renderer.AddViewProp(actor)
+            self.window.renderer.AddViewProp(actor)
             self._clock = actor
         self._clock.SetInput(str(text))
 
     def close(self) -> None:
-        self.plotter.close()
+        self.window.close()
 
     def __enter__(self):
         return self
@@ -202,7 +202,9 @@ class Scene(SceneBase):
     def __init__(self, system: System, *, canvas: SceneCfg, camera: CameraCfg,
                  holder: HolderCfg, spring: SpringCfg, ball: BallCfg, antialias: bool = True,
                  backend_name: str = "auto") -> None:
-        pl = self._open(canvas, camera, antialias, backend_name)
+        from pyvista.core import Box, PolyData, Sphere  # noqa: PLC0415  heavy: pyvista
+
+        win = self._open(canvas, camera, antialias, backend_name)
         self.ball_radius = ball.radius
 
         # holders: boxes centred on the fixed nodes
@@ -211,8 +213,8 @@ class Scene(SceneBase):
         for node in np.flatnonzero(system.fixed):
             c = system.pos[node]
             half = np.asarray(holder.size) / 2
-            box = window.box(np.ravel(np.column_stack([c - half, c + half])))
-            actor = pl.add_actor(window.mesh_actor(box))
+            box = Box(bounds=np.ravel(np.column_stack([c - half, c + half])))
+            actor = win.add_actor(mesh_actor(box))
             _material(actor, holder.color)
             actor.GetProperty().SetInterpolationToFlat()      # a box has flat faces
             self._holder_bounds.append(np.stack([c - half, c + half]))
@@ -222,8 +224,9 @@ class Scene(SceneBase):
         self._balls = []
         r = ball.radius
         for node in system.free:
-            sphere = window.sphere(r, SPHERE_SLICES)
-            actor = pl.add_actor(window.mesh_actor(sphere, smooth_shading=True))
+            sphere = Sphere(radius=r, theta_resolution=SPHERE_SLICES,
+                            phi_resolution=SPHERE_SLICES)
+            actor = win.add_actor(mesh_actor(sphere, smooth_shading=True))
             _material(actor, ball.color)
             self._balls.append((int(node), actor))
 
@@ -235,14 +238,14 @@ class Scene(SceneBase):
             frame = HelixFrame()
             pts, normals = tube.points(system.pos[i], system.pos[j] - system.pos[i],
                                        frame.set_axis(system.pos[j] - system.pos[i]))
-            mesh = window.polydata(pts, tube.faces())
+            mesh = PolyData(pts, faces=tube.faces())
             mesh.point_data["Normals"] = normals
             mesh.GetPointData().SetActiveNormals("Normals")
-            actor = pl.add_actor(window.mesh_actor(mesh))
+            actor = win.add_actor(mesh_actor(mesh))
             _material(actor, sc.color)
             self._springs.append((int(i), int(j), tube, frame, mesh, actor))
 
-        add_title(pl, canvas)
+        add_title(win, canvas)
         self.update(system)
 
     # -- per frame ---------------------------------------------------------------------

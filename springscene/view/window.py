@@ -1,18 +1,16 @@
-"""An off-screen VTK render window on plain VTK: what the scenes drew with ``pv.Plotter``.
+"""The off-screen render window, on plain VTK, and the actors the scenes put in it.
 
-``pyvista.plotting`` imports matplotlib's pyplot, and pyvista's core a score of VTK modules
-the scenes never use: with them a still or a GIF of the page's scene peaked at 345 MB,
-without them at 255-270 MB (issue 15). A :class:`Window` is one off-screen render
-window and renderer of a size, a background, multisampling and scene lights;
-:func:`mesh_actor` and :func:`title_actor` make the actors ``pv.Plotter.add_mesh`` and
-``add_text(position="upper_edge")`` made, with the same property values (pyvista 0.46:
-colours rounded to 1/255, a ``vtkDataSetMapper`` with scalars off, point normals
-computed for smooth shading, a ``vtkCornerAnnotation`` scaled by half the font size);
-:func:`polydata`, :func:`box` and :func:`sphere` make the meshes ``pv.PolyData``,
-``pv.Box`` and ``pv.Sphere`` made, bit for bit. The pictures are the ones pyvista drew.
-The VPython renderer draws here too: :func:`rgb_mesh_actor` (``add_mesh`` of a mesh
-coloured by its points' ``rgb``, a texture or none), :func:`image_texture`
-(``pv.Texture``) and :func:`scene_light` (``pv.Light``) make what pyvista made.
+The meshes are pyvista's core (``pyvista.core``: ``PolyData``, ``Sphere``, ``Box``); the
+window is not ``pv.Plotter``, because ``pyvista.plotting`` imports matplotlib's pyplot,
+which no scene without a graph needs. A :class:`Window` is one off-screen render window
+and renderer of a size, a background, multisampling and scene lights. The actors are the
+ones ``pv.Plotter`` made, with the same property values (pyvista 0.46), so the pictures
+are pyvista's: :func:`mesh_actor` and :func:`title_actor` (``add_mesh``, and
+``add_text(position="upper_edge")``: colours rounded to 1/255, a ``vtkDataSetMapper``
+with scalars off, point normals computed for smooth shading, a ``vtkCornerAnnotation``
+scaled by half the font size); for the VPython renderer :func:`rgb_mesh_actor`
+(``add_mesh`` of a mesh coloured by its points' ``rgb``, a texture or none),
+:func:`image_texture` (``pv.Texture``) and :func:`scene_light` (``pv.Light``).
 
 The backend must have been chosen (:func:`springscene.view.backend.select`) before a
 window is made.
@@ -67,8 +65,6 @@ class Window:
         Directional scene lights, each shining from ``(x, y, z)`` towards the origin
         in gray ``intensity`` (rounded to 1/255, as ``pv.Light``'s colour).
     """
-
-    camera_set = False        # set by view.scene.apply_view, as on a pv.Plotter
 
     def __init__(self, size: tuple[int, int], background, multisamples: int = 0,
                  lights=()) -> None:
@@ -157,17 +153,16 @@ class Window:
 
 
 def mesh_actor(mesh, smooth_shading: bool = False):
-    """An actor for a ``vtkPolyData`` as ``pv.Plotter.add_mesh(mesh, smooth_shading=...)``
-    made it (no colour: the caller sets the material).
+    """An actor for a pyvista ``PolyData`` as ``pv.Plotter.add_mesh(mesh,
+    smooth_shading=...)`` made it (no colour: the caller sets the material).
 
-    Smooth shading computes point normals into ``mesh`` in place when it has none
-    (pyvista's ``compute_normals(cell_normals=False)``: no splitting, consistent
-    ordering, non-manifold traversal, feature angle 30 degrees).
+    Smooth shading computes point normals into ``mesh`` in place when it has none, as
+    ``add_mesh`` does: pyvista's ``compute_normals(cell_normals=False, inplace=True)``.
     """
     from vtkmodules.vtkRenderingCore import vtkActor, vtkDataSetMapper  # noqa: PLC0415  heavy: VTK
 
-    if smooth_shading and mesh.GetPointData().GetNormals() is None:
-        _compute_point_normals(mesh)
+    if smooth_shading and mesh.point_data.active_normals is None:
+        mesh.compute_normals(cell_normals=False, inplace=True)
     mapper = vtkDataSetMapper()
     mapper.SetInputData(mesh)
     mapper.SetInterpolateScalarsBeforeMapping(True)
@@ -255,25 +250,6 @@ def image_texture(image: np.ndarray):
     return texture
 
 
-def _compute_point_normals(mesh) -> None:
-    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals  # noqa: PLC0415  heavy: VTK
-
-    normals = vtkPolyDataNormals()
-    normals.SetComputeCellNormals(False)
-    normals.SetComputePointNormals(True)
-    normals.SetSplitting(False)
-    normals.SetFlipNormals(False)
-    normals.SetConsistency(True)
-    normals.SetAutoOrientNormals(False)
-    normals.SetNonManifoldTraversal(True)
-    normals.SetFeatureAngle(30.0)
-    normals.SetInputData(mesh)
-    normals.Update()
-    out = normals.GetOutput()
-    out.GetPointData().SetActiveNormals("Normals")
-    mesh.ShallowCopy(out)
-
-
 def title_actor(text: str, font_size: int, color):
     """A title along the top edge's middle, as ``pv.Plotter.add_text(text,
     position="upper_edge", font_size=font_size, color=color)`` drew it: a
@@ -289,97 +265,3 @@ def title_actor(text: str, font_size: int, color):
     prop.SetOrientation(0.0)
     prop.SetShadow(False)
     return actor
-
-
-# -- meshes on plain VTK: what pv.PolyData, pv.Box and pv.Sphere made ---------------------
-
-@functools.cache
-def _polydata_class():
-    """VTK's own ``PolyData`` (``points``, ``point_data``, ``bounds`` as numpy views, VTK
-    9.4's data model) with pyvista's ``n_points``."""
-    from vtkmodules.util.data_model import PolyData as VTKPolyData  # noqa: PLC0415  heavy: VTK
-
-    class PolyData(VTKPolyData):
-        """A ``vtkPolyData`` with numpy views of its points and arrays."""
-
-        @property
-        def n_points(self) -> int:
-            return self.GetNumberOfPoints()
-
-    return PolyData
-
-
-def polydata(points=None, faces=None, source=None):
-    """A ``vtkPolyData`` of ``points`` (n, 3), their dtype kept, and ``faces`` in VTK's flat
-    ``[n, i0, i1, ..., n, ...]`` layout; with no faces, one vertex cell a point (as
-    ``pv.PolyData(points)``). ``source``, another polydata, is shallow-copied instead;
-    with neither, the polydata is empty. Its ``points``, ``point_data[name]`` and
-    ``bounds`` are VTK's numpy views (``vtkmodules.util.data_model``)."""
-    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray  # noqa: PLC0415  heavy: VTK
-    from vtkmodules.vtkCommonCore import vtkPoints  # noqa: PLC0415  heavy: VTK
-    from vtkmodules.vtkCommonDataModel import vtkCellArray  # noqa: PLC0415  heavy: VTK
-
-    mesh = _polydata_class()()
-    if source is not None or points is None:
-        if source is not None:
-            mesh.ShallowCopy(source)
-        return mesh
-    pts = np.ascontiguousarray(points)
-    vtk_points = vtkPoints()
-    vtk_points.SetData(numpy_to_vtk(pts, deep=True))
-    mesh.SetPoints(vtk_points)
-    cells = vtkCellArray()
-    if faces is None:
-        n = len(pts)
-        cells.SetData(numpy_to_vtkIdTypeArray(np.arange(n + 1, dtype=np.int64), deep=True),
-                      numpy_to_vtkIdTypeArray(np.arange(n, dtype=np.int64), deep=True))
-        mesh.SetVerts(cells)
-    else:
-        cells.ImportLegacyFormat(numpy_to_vtkIdTypeArray(
-            np.ascontiguousarray(faces, dtype=np.int64), deep=True))
-        mesh.SetPolys(cells)
-    return mesh
-
-
-def box(bounds):
-    """An axis-aligned box, ``bounds`` (xmin, xmax, ymin, ymax, zmin, zmax): six quads
-    (``pv.Box(bounds=...)``)."""
-    from vtkmodules.vtkFiltersSources import vtkTessellatedBoxSource  # noqa: PLC0415  heavy: VTK
-
-    src = vtkTessellatedBoxSource()
-    src.SetLevel(0)
-    src.QuadsOn()
-    src.SetBounds(*(float(b) for b in bounds))
-    src.Update()
-    return polydata(None, source=src.GetOutput())
-
-
-def sphere(radius: float, resolution: int):
-    """A UV sphere about the origin with ``resolution`` slices and stacks, and its point
-    normals, as ``pv.Sphere`` made it: VTK's sphere source turned twice (pyvista turns it
-    90 degrees about y and then to its default direction +z), which gives the same
-    points and renormalises the normals."""
-    from vtkmodules.vtkCommonTransforms import vtkTransform  # noqa: PLC0415  heavy: VTK
-    from vtkmodules.vtkFiltersGeneral import vtkTransformFilter  # noqa: PLC0415  heavy: VTK
-    from vtkmodules.vtkFiltersSources import vtkSphereSource  # noqa: PLC0415  heavy: VTK
-
-    src = vtkSphereSource()
-    src.SetRadius(float(radius))
-    src.SetThetaResolution(int(resolution))
-    src.SetPhiResolution(int(resolution))
-    src.Update()
-    out = src.GetOutput()
-    for turn in (_PV_SPHERE_TURN, _PV_SPHERE_DIRECTION):
-        transform = vtkTransform()
-        transform.SetMatrix([float(v) for row in turn for v in row])
-        step = vtkTransformFilter()
-        step.SetInputData(out)
-        step.SetTransform(transform)
-        step.Update()
-        out = step.GetOutput()
-    return polydata(None, source=out)
-
-
-# pv.Sphere's two turns: 90 degrees about y, then the +z direction's frame
-_PV_SPHERE_TURN = ((0, 0, 1, 0), (0, 1, 0, 0), (-1, 0, 0, 0), (0, 0, 0, 1))
-_PV_SPHERE_DIRECTION = ((0, 0, -1, 0), (0, 1, 0, 0), (1, 0, 0, 0), (0, 0, 0, 1))

@@ -232,7 +232,7 @@ def test_update_rewrites_the_same_objects_in_place(style):
     s = build.system(cfg)
     with render.make_scene(cfg, s, color_range=(0.0, 1000.0)) as sc:
         first = sc.frame()
-        ren = sc.plotter.renderer
+        ren = sc.window.renderer
         objects = (sc.atoms, sc.bonds, sc.atom_actor, sc.bond_actor)
         addresses = (sc.atoms.GetPoints().__this__, sc.bonds.GetPoints().__this__)
         n_props = ren.GetViewProps().GetNumberOfItems()

@@ -37,10 +37,10 @@ def ball_centroid(img):
 def test_spring_mesh_spans_holder_to_ball_centre(scene, wiki_cfg, y):
     s = build.system(config.override(wiki_cfg, "ball", pos=(0.01, y, 0.0)))
     meshes_before = list(scene.spring_meshes)
-    n_actors = len(scene.plotter.renderer.actors)
+    n_actors = len(scene.window.renderer.actors)
     scene.update(s)
     mesh = scene.spring_meshes[0]
-    assert scene.spring_meshes == meshes_before and len(scene.plotter.renderer.actors) == n_actors
+    assert scene.spring_meshes == meshes_before and len(scene.window.renderer.actors) == n_actors
     rings = np.asarray(mesh.points).reshape(-1, 16, 3).mean(axis=1)   # centre line
     axis = s.pos[1] - s.pos[0]
     u = axis / np.linalg.norm(axis)
@@ -198,7 +198,7 @@ def test_driven_holder_moves_with_its_support():
     with render.make_scene(cfg, s, antialias=False) as sc:
         physics.step(s, 52)
         sc.update(s)
-        holder = sc.plotter.renderer.actors
+        holder = sc.window.renderer.actors
         offset = s.pos[0] - np.asarray(cfg.holder.pos)
         assert offset[1] == pytest.approx(0.03 * math.sin(3.0 * 0.52))
         boxes = [a for a in holder.values()

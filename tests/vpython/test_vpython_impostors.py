@@ -272,7 +272,7 @@ def test_a_renderer_of_chunked_impostors_dropped_unclosed_is_freed(monkeypatch):
     r.frame()
     (batch,) = [b for k, b in r._batches.items() if k[0] == "sphere"]
     assert len(batch.impostors.chunks) == 2
-    window = weakref.ref(r.plotter.ren_win)
+    window = weakref.ref(r.window.ren_win)
     del r, batch
     gc.collect()
     assert window() is None

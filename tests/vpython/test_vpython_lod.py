@@ -311,9 +311,9 @@ def test_no_frustum_culler_and_the_same_picture():
     vp.helix(pos=vp.vector(-1.5, -0.5, 0), axis=vp.vector(1, 1, 0), radius=0.3)
     vp.box(pos=vp.vector(40, 0, 0))                        # out of view
     r = Renderer(vp.scene, antialias=False)
-    assert r.plotter.renderer.GetCullers().GetNumberOfItems() == 0
+    assert r.window.renderer.GetCullers().GetNumberOfItems() == 0
     without = r.frame()
-    r.plotter.renderer.GetCullers().AddItem(vtkFrustumCoverageCuller())
+    r.window.renderer.GetCullers().AddItem(vtkFrustumCoverageCuller())
     with_culler = r.frame()
     r.close()
     assert without.any() and np.array_equal(without, with_culler)

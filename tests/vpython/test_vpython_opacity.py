@@ -145,18 +145,18 @@ def test_opacity_change_switches_peeling_and_back(vp):
     r = Renderer(vp.scene)
     try:
         opaque = r.frame()
-        assert not r.plotter.renderer.GetUseDepthPeeling()
-        assert r.plotter.ren_win.GetMultiSamples() == MULTI_SAMPLES
+        assert not r.window.renderer.GetUseDepthPeeling()
+        assert r.window.ren_win.GetMultiSamples() == MULTI_SAMPLES
         ball.opacity = 0.5
         half = r.frame()
-        assert r.plotter.renderer.GetUseDepthPeeling()
-        assert r.plotter.ren_win.GetMultiSamples() == 0
+        assert r.window.renderer.GetUseDepthPeeling()
+        assert r.window.ren_win.GetMultiSamples() == 0
         # the centre: half the lit red over the blue box behind it
         assert half[200, 320, 0] < opaque[200, 320, 0] - 50
         assert half[200, 320, 2] > opaque[200, 320, 2] + 40
         ball.opacity = 1
         again = r.frame()
-        assert not r.plotter.renderer.GetUseDepthPeeling()
+        assert not r.window.renderer.GetUseDepthPeeling()
         assert np.array_equal(again, opaque)
     finally:
         r.close()

@@ -307,7 +307,7 @@ def test_a_thousand_spheres_are_one_batch_updated_in_place(vp):
     r = Renderer(vp.scene)
     try:
         first = r.frame()
-        actors = list(r.plotter.renderer.actors.values())
+        actors = list(r.window.renderer.actors.values())
         spheres = [b for key, b in r._batches.items() if key[0] == "sphere"]
         assert len(spheres) == 1 and spheres[0].no_meshes
         mesh = spheres[0].impostors.mesh
@@ -322,7 +322,7 @@ def test_a_thousand_spheres_are_one_batch_updated_in_place(vp):
         r.frame()
         assert spheres[0].impostors.mesh is mesh and mesh.GetPoints().GetMTime() > mtime
         assert np.allclose(mesh.points[1], [1, 0, 0.5])
-        assert list(r.plotter.renderer.actors.values()) == actors     # no actor added
+        assert list(r.window.renderer.actors.values()) == actors     # no actor added
         assert first.shape == (400, 640, 3)
     finally:
         r.close()

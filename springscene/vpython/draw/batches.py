@@ -38,16 +38,15 @@ class Batch:
     vertex_alpha = False  # some vertex's own opacity (RGBA colours) is below 1
     lit = False          # a surface lit by the lights (shaded by GlowScript's rules)
 
-    def __init__(self, plotter, key: tuple, texture=None) -> None:
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
+    def __init__(self, window, key: tuple, texture=None) -> None:
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
 
         self.key = key
         self.signature = None
-        self.mesh = pv.PolyData()
-        self.plotter = plotter
+        self.mesh = PolyData()
+        self.window = window
         self.actor = None
         self.texture = texture
-        self.pv = pv
 
     def set(self, points, normals, colors, cells, signature, style, uv=None) -> None:
         """New geometry: in place when the topology (``signature``) is unchanged."""
@@ -60,7 +59,9 @@ class Batch:
         if signature == self.signature and self.actor is not None:
             self._update(points, normals, colors, uv)
             return
-        mesh = self.pv.PolyData(points, faces=cells)    # every kind is triangles
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
+
+        mesh = PolyData(points, faces=cells)    # every kind is triangles
         if normals is not None:
             mesh.point_data["Normals"] = normals
             mesh.GetPointData().SetActiveNormals("Normals")
@@ -72,7 +73,7 @@ class Batch:
             self.mesh.GetPointData().SetActiveScalars("rgb")
         else:
             self.mesh = mesh
-            self.actor = self.plotter.add_actor(rgb_mesh_actor(mesh, self.texture))
+            self.actor = self.window.add_actor(rgb_mesh_actor(mesh, self.texture))
             self._style(style)
         self.signature = signature
 
@@ -102,7 +103,7 @@ class Batch:
         mapper.SetColorModeToDirectScalars()
         actor = vtkActor()
         actor.SetMapper(mapper)
-        self.plotter.add_actor(actor)      # listed in renderer.actors, as add_mesh's are
+        self.window.add_actor(actor)      # listed in renderer.actors, as add_mesh's are
         self.actor = actor
         self._style(style)
 
@@ -158,7 +159,7 @@ class Batch:
 
     def remove(self) -> None:
         if self.actor is not None:
-            self.plotter.remove_actor(self.actor)
+            self.window.remove_actor(self.actor)
             self.actor = None
         for part in self.parts:
             part.remove()
@@ -168,9 +169,9 @@ class TexturedBatch(Batch):
     """A batch drawn with a picture; the parts a ``place`` leaves bare go to a second,
     plain actor (GlowScript draws those in the object's colour, untextured)."""
 
-    def __init__(self, plotter, key: tuple, texture) -> None:
-        super().__init__(plotter, key, texture)
-        self.bare = Batch(plotter, key)
+    def __init__(self, window, key: tuple, texture) -> None:
+        super().__init__(window, key, texture)
+        self.bare = Batch(window, key)
         self.parts = (self.bare,)
         spec = key[-1]                     # the batch's TextureSpec (renderer.Renderer._key)
         bump = texturing.bump_of(spec) if isinstance(spec, texturing.TextureSpec) else None

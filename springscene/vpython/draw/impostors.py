@@ -135,8 +135,8 @@ class SphereImpostors(Batch):
     colour each, :data:`CHUNK` spheres an actor (the first chunk this batch's own, the
     others its :attr:`parts`)."""
 
-    def __init__(self, plotter, key: tuple, flush: bool = False) -> None:
-        super().__init__(plotter, key)
+    def __init__(self, window, key: tuple, flush: bool = False) -> None:
+        super().__init__(window, key)
         self.flush = flush              # finish the drawing so far before this chunk's
         self.chunks: list[SphereImpostors] = []
 
@@ -146,7 +146,7 @@ class SphereImpostors(Batch):
         (drawn at the radius of :data:`EQUAL_AREA`), in chunks of :data:`CHUNK`."""
         starts = range(CHUNK, len(pos), CHUNK)
         while len(self.chunks) < len(starts):
-            self.chunks.append(SphereImpostors(self.plotter, self.key, flush=True))
+            self.chunks.append(SphereImpostors(self.window, self.key, flush=True))
         self._set_chunk(pos[:CHUNK], radius[:CHUNK], rgb[:CHUNK], style)
         for chunk, s in zip(self.chunks, starts):
             chunk._set_chunk(pos[s:s + CHUNK], radius[s:s + CHUNK], rgb[s:s + CHUNK], style)
@@ -169,7 +169,9 @@ class SphereImpostors(Batch):
                     self.mesh.GetPointData().GetArray(name).Modified()
             self.mesh.Modified()
             return
-        mesh = self.pv.PolyData(pos.copy())
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
+
+        mesh = PolyData(pos.copy())
         mesh.point_data["radius"] = radius.copy()
         mesh.point_data["rgb"] = rgb.copy()
         if self.actor is None:
@@ -185,7 +187,7 @@ class SphereImpostors(Batch):
         m.SetInputData(self.mesh)
         m.SetScaleArray("radius")
         if self.flush:                  # the chunks before drawn (rasterised) first
-            m.AddObserver("StartEvent", _finisher(self.plotter.ren_win))
+            m.AddObserver("StartEvent", _finisher(self.window.ren_win))
         self._adopt(m, style)
 
     def _shade(self) -> None:
@@ -200,9 +202,9 @@ class SphereBatch(InstancedBatch):
     """Opaque spheres of one look: the small ones impostors (:attr:`impostors`), the
     others instances of VPython's 30-slice mesh."""
 
-    def __init__(self, plotter, key: tuple) -> None:
-        super().__init__(plotter, key)
-        self.impostors = SphereImpostors(plotter, key)
+    def __init__(self, window, key: tuple) -> None:
+        super().__init__(window, key)
+        self.impostors = SphereImpostors(window, key)
         self.parts = (self.impostors,)
 
     @property

@@ -57,11 +57,10 @@ def quaternions(R: np.ndarray) -> np.ndarray:
 
 def _source(template):
     """The unit template as VTK polydata with its normals."""
-    import pyvista as pv  # noqa: PLC0415  heavy: pyvista
+    from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
 
-    tris = np.asarray(template.triangles)
-    faces = np.column_stack([np.full(len(tris), 3), tris]).ravel()
-    mesh = pv.PolyData(np.asarray(template.points, dtype=float), faces=faces)
+    mesh = PolyData.from_regular_faces(np.asarray(template.points, dtype=float),
+                                       np.asarray(template.triangles), deep=True)
     mesh.point_data["Normals"] = np.asarray(template.normals, dtype=float)
     mesh.GetPointData().SetActiveNormals("Normals")
     return mesh
@@ -70,8 +69,8 @@ def _source(template):
 class InstancedBatch(Batch):
     """Every object of one template kind and look, drawn as instances of the template."""
 
-    def __init__(self, plotter, key: tuple) -> None:
-        super().__init__(plotter, key)
+    def __init__(self, window, key: tuple) -> None:
+        super().__init__(window, key)
         self.template_key = None
         self.instances = 0
 
@@ -104,9 +103,9 @@ class InstancedBatch(Batch):
         pd.Modified()
 
     def _new_input(self, pos, R, size, rgb) -> None:
-        import pyvista as pv  # noqa: PLC0415  heavy: pyvista
+        from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
 
-        pd = pv.PolyData(pos.copy())
+        pd = PolyData(pos.copy())
         pd.point_data["orient"] = quaternions(R)
         pd.point_data["scale"] = np.asarray(size, dtype=float).reshape(-1, 3).copy()
         pd.point_data["rgb"] = np.asarray(rgb, dtype=np.uint8).reshape(-1, 3).copy()

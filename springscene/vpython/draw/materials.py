@@ -106,11 +106,11 @@ class Transparency:
     """The renderer's way of drawing: GlowScript's depth peeling without anti-aliasing
     while any batch is transparent, the plain anti-aliased drawing otherwise."""
 
-    def __init__(self, plotter, samples: int) -> None:
-        self.renderer = plotter.renderer
-        self.window = plotter.ren_win
+    def __init__(self, window, samples: int) -> None:
+        self.renderer = window.renderer
+        self.ren_win = window.ren_win
         self.samples = samples            # MSAA samples of a scene with nothing transparent
-        self.window.SetMultiSamples(samples)
+        self.ren_win.SetMultiSamples(samples)
         self.peeling = False
         self.renderer.SetMaximumNumberOfPeels(PEELS)
         self.renderer.SetOcclusionRatio(0.0)
@@ -121,7 +121,7 @@ class Transparency:
         if peeling == self.peeling:
             return
         self.renderer.SetUseDepthPeeling(peeling)
-        self.window.SetMultiSamples(0 if peeling else self.samples)
+        self.ren_win.SetMultiSamples(0 if peeling else self.samples)
         self.peeling = peeling
 
 

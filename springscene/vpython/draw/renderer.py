@@ -66,10 +66,10 @@ class Renderer:
         self.width, self.height = int(cv.width), int(cv.height)
         self.antialias, self.lod = antialias, lod
         # plain VTK (no pyvista.plotting, no matplotlib); no light until scene.lights
-        pl = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
-        helices.no_frustum_culler(pl.renderer)  # its bounds cost time, not pixels
-        self._transparency = materials.Transparency(pl, MULTI_SAMPLES if antialias else 0)
-        self.plotter = pl
+        win = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
+        helices.no_frustum_culler(win.renderer)  # its bounds cost time, not pixels
+        self._transparency = materials.Transparency(win, MULTI_SAMPLES if antialias else 0)
+        self.window = win
         self._ambient = None
         self._batches: dict[tuple, _Batch] = {}
         self._label_specs: list = []
@@ -87,7 +87,7 @@ class Renderer:
         if self._pixels is None:
             from vtkmodules.vtkCommonCore import vtkUnsignedCharArray  # noqa: PLC0415  heavy: vtk
             self._pixels = vtkUnsignedCharArray()
-        image = grab(self.plotter.ren_win, self.width, self.height, self._pixels)
+        image = grab(self.window.ren_win, self.width, self.height, self._pixels)
         return label_overlay.composite(image, self._label_specs)
 
     def sync(self) -> None:
@@ -167,11 +167,11 @@ class Renderer:
         spec = key[-1] if key[0] in ("textured", "triangle") else None
         if spec is None:
             if not self._instanced(key):
-                return _Batch(self.plotter, key)
-            spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.plotter.ren_win)
-            return (SphereBatch if spheres else InstancedBatch)(self.plotter, key)
+                return _Batch(self.window, key)
+            spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.window.ren_win)
+            return (SphereBatch if spheres else InstancedBatch)(self.window, key)
         texture = self._textures.get(spec.source, texturing.load(spec))
-        return TexturedBatch(self.plotter, key, texture)
+        return TexturedBatch(self.window, key, texture)
 
     @staticmethod
     def _instanced(key: tuple) -> bool:
@@ -356,7 +356,7 @@ class Renderer:
     def _sync_background(self) -> None:
         bg = tuple(self.cv.background.value)
         if bg != self._background:
-            self.plotter.set_background(bg)
+            self.window.set_background(bg)
             self._background = bg
 
     def _sync_lights(self) -> None:
@@ -366,8 +366,8 @@ class Renderer:
                     for lt in lights)
         if sig == self._lights_sig:
             return
-        self.plotter.remove_all_lights()
-        add = self.plotter.renderer.AddLight
+        self.window.remove_all_lights()
+        add = self.window.renderer.AddLight
         for kind, colour, where in sig:
             if kind == "distant_light":
                 add(window.scene_light(where, colour, False, focal_point=(0, 0, 0)))
@@ -388,7 +388,7 @@ class Renderer:
         rng = cv._range_now()
         v = camera.view(center, np.array(cv.forward.value), np.array(cv.up.value), cv.fov,
                         rng, w, h)
-        apply_view(self.plotter, v)
+        apply_view(self.window, v)
         self.view = v
 
     def _sync_labels(self, labels: list) -> None:
@@ -398,7 +398,7 @@ class Renderer:
                              for lab in labels]
 
     def close(self) -> None:
-        self.plotter.close()
+        self.window.close()
 
 
 def _texture_of(obj) -> texturing.TextureSpec | None:

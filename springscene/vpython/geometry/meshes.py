@@ -64,9 +64,9 @@ def sphere(slices: int = SPHERE_SLICES) -> Mesh:
     radial directions. Also the ellipsoid's template (GlowScript draws an
     ellipsoid with the sphere model).
     """
-    import pyvista as pv  # noqa: PLC0415  heavy: pyvista, only to copy its vertex layout, once
+    from pyvista.core import Sphere  # noqa: PLC0415  heavy: pyvista, only to copy its vertex layout, once
 
-    s = pv.Sphere(radius=0.5, theta_resolution=slices, phi_resolution=slices)
+    s = Sphere(radius=0.5, theta_resolution=slices, phi_resolution=slices)
     points = np.asarray(s.points, dtype=float)
     triangles = np.asarray(s.faces).reshape(-1, 4)[:, 1:]
     return _frozen(_mesh(points, points, triangles))
