@@ -313,7 +313,7 @@ def render(cfg: Config | str, out: str | Path, *, duration: float | None = None,
     backend : {"auto", "egl", "osmesa"}
         The off-screen OpenGL.
     progress : bool, optional
-        A progress bar (``tqdm.auto``: a widget in Jupyter); default on in a
+        A progress bar (tqdm's: a widget in Jupyter); default on in a
         notebook or on a terminal.
     **options
         Any other option of :func:`springscene.render.render_video`.

@@ -19,9 +19,8 @@ from pathlib import Path
 
 import numpy as np
 
-from tqdm.auto import tqdm   # a widget in Jupyter, text on a terminal
-
 from . import build, config, progress
+from .progress import tqdm_class
 from .errors import UserError
 from .model import physics
 from .model.timeline import frame_steps, play, step_at
@@ -239,8 +238,9 @@ def render_video(cfg: Config, out: str | Path, *, duration: float | None = None,
             make_scene(cfg, system, antialias=antialias, backend=backend) as scene:
         with VideoWriter(tmp, fps, panels.size, quality) as writer:
             loop_start = time.perf_counter()
-            for system in play(system, tqdm(steps, desc=path.name, unit="frame",
-                                            disable=not progress, leave=False)):
+            bar = tqdm_class()(steps, desc=path.name, unit="frame", disable=not progress,
+                               leave=False)
+            for system in play(system, bar):
                 scene.update(system)
                 panels.update_scene(scene, system)
                 writer.write(panels.compose(scene.frame(), system))
