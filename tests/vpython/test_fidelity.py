@@ -60,6 +60,7 @@ def test_real_vpythons_id_picture_shows_every_object(scene):
     assert all(m.sum() >= 30 for m in masks), [int(m.sum()) for m in masks]
 
 
+@pytest.mark.slow       # the harness runs springscene vpython supervised: a new Python a scene
 @pytest.mark.parametrize("scene", SCENES)
 def test_springscene_against_real_vpython(scene, tmp_path):
     m = harness.measure(scene, tmp_path)
@@ -80,6 +81,7 @@ def test_springscene_against_real_vpython(scene, tmp_path):
     assert not bad, f"{scene}: " + "; ".join(bad)
 
 
+@pytest.mark.slow       # the harness runs springscene vpython supervised: new Pythons
 def test_the_comparison_catches_a_small_change(tmp_path):
     """A scene drawn with its sphere 5 % smaller fails the sphere's IoU target and only
     the sphere's: the harness tells one object from another."""
