@@ -219,8 +219,9 @@ FAST_LIMIT_S = 1.0       # a fast test's call over this is named at the end of t
 LONG_AT_LEAST_S = 0.3    # a LONG_TESTS entry whose cases took less in all is named too
 
 # rule 3: tests that run long in this process, with the seconds each took (all its cases)
-# in the fast tier's run on 2 shared cores; every test that took 0.6 s or more there is here
-# but two pictures kept for the fast tier's image regression (tests/view/test_render.py)
+# in the fast tier's runs that made this list, on 2 shared cores: every test that took 0.6 s
+# or more there but two pictures kept for the fast tier's image regression
+# (tests/view/test_render.py)
 LONG_TESTS = {
     "tests/figures/test_figures.py::test_closed_form_matches_rk4_for_damped_and_driven_configs": 2.8,
     "tests/figures/test_figures.py::test_hooke_figure": 0.6,
@@ -262,6 +263,7 @@ LONG_TESTS = {
     "tests/view/test_lattice_scene.py::test_each_bond_style_renders_and_differs": 0.7,
     "tests/view/test_lattice_scene.py::test_update_rewrites_the_same_objects_in_place": 1.3,
     "tests/vpython/test_fidelity.py::test_real_vpythons_id_picture_shows_every_object": 0.7,
+    "tests/vpython/test_fidelity.py::test_springscene_against_real_vpython": 6.5,
     "tests/vpython/test_vpython_dialects.py::test_glowscript_spring_lab_moves_the_ball_and_plots": 1.8,
     "tests/vpython/test_vpython_dialects.py::test_vpython6_bounce_with_a_frame": 1.8,
     "tests/vpython/test_vpython_dialects.py::test_vpython6_controls_wait_for_no_one": 0.7,
