@@ -133,6 +133,21 @@ def test_this_file_is_in_the_tiers_its_marks_say(request):
     assert here["test_the_guard_lets_other_programs_through"] is False
 
 
+def test_a_fast_test_that_ran_long_is_named_at_the_end(monkeypatch):
+    monkeypatch.setattr(conftest, "_long_fast_tests", [])
+    over = conftest.FAST_LIMIT_S + 1
+    for nodeid, keywords, when in (("tests/x.py::test_fast", {}, "call"),
+                                   ("tests/x.py::test_slow", {"slow": 1}, "call"),
+                                   ("tests/x.py::test_setup", {}, "setup")):
+        conftest.pytest_runtest_logreport(types.SimpleNamespace(
+            when=when, passed=True, keywords=keywords, duration=over, nodeid=nodeid))
+    lines = []
+    conftest.pytest_terminal_summary(types.SimpleNamespace(section=lines.append,
+                                                           line=lines.append))
+    assert lines[0] == "tiers: fast tests that ran long" and len(lines) == 2
+    assert lines[1].startswith(f"{over:.1f} s  tests/x.py::test_fast: in the fast tier")
+
+
 # ---- the cli fixture: as a new process --------------------------------------------------------
 
 def test_cli_gives_what_a_new_process_gives(cli):
