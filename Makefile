@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render figures matter test lint bench baselines clean system-deps fidelity
+.PHONY: setup render figures matter test test-fast lint bench baselines clean system-deps fidelity
 
 # Which Python made the .venv, and which one $(PYTHON) is: a .venv made by another (a run
 # with an older or newer Python, or one whose Python has gone) is removed and made afresh.
@@ -65,7 +65,12 @@ matter: setup
 	$(BIN)/springscene still configs/bar.toml --time 8e-12 --out renders/matter/bar/still.png
 
 test: setup
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest --durations=25
+
+# the fast tier: every test not marked slow (tests/conftest.py's rules), every layer, under a
+# minute; `make test` runs the slow ones too
+test-fast: setup
+	$(BIN)/python -m pytest -m "not slow" --durations=10
 
 # the layers (docs/architecture.md): import-linter's contracts and ruff's import rules;
 # tests/test_architecture.py runs the same in `make test`

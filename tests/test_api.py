@@ -115,7 +115,7 @@ def test_load_config_by_file_starter_name_or_dict(wiki):
         springscene.load_config("nope.toml")
 
 
-def test_replace_gives_the_same_one_line_error_as_the_toml_file(tmp_path):
+def test_replace_gives_the_same_one_line_error_as_the_toml_file(tmp_path, cli):
     """cfg.replace(k=-1) and a TOML file with k = -1 are refused with the same words."""
     good = tmp_path / "wiki.toml"
     good.write_text(WIKI.read_text())
@@ -130,7 +130,7 @@ def test_replace_gives_the_same_one_line_error_as_the_toml_file(tmp_path):
     assert str(from_replace.value) == str(from_file.value)
     assert str(from_replace.value) == f"{bad}: [spring] k must be > 0, got -1"
     # and the CLI prints the file's error as one line, exit 2
-    proc = run_cli("simulate", bad, "--out", tmp_path / "t.csv")
+    proc = cli("simulate", bad, "--out", tmp_path / "t.csv")
     assert proc.returncode == 2
     assert proc.stderr == f"springscene: error: {from_file.value}\n"
 
@@ -236,6 +236,7 @@ def test_analyze_and_sweep(wiki):
         springscene.sweep("driven", "10:14")
 
 
+@pytest.mark.slow       # run_vpython runs the program in a supervised child: a new Python
 def test_run_vpython_is_a_video(tmp_path):
     program = springscene.init("bounce", tmp_path)
     video = springscene.run_vpython(program, tmp_path / "b.png", duration=0.2, draft=True,

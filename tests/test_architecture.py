@@ -38,6 +38,7 @@ def _tool(name: str, *args: str) -> subprocess.CompletedProcess:
                           timeout=300)
 
 
+@pytest.mark.slow       # lint-imports is a Python program: a new Python
 def test_layer_contracts_hold():
     """Layers import only downward, the model is numpy only, drawing never imports the
     stepping (timeline, integrators, build, config, science), and no module cycle exists."""

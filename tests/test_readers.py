@@ -12,7 +12,7 @@ import imageio.v3 as iio
 import numpy as np
 import pytest
 
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI
 from springscene import build, config, jobs, render
 from springscene.app.cli import main
 from springscene.figures.gallery import check_prefix, gallery
@@ -135,15 +135,15 @@ def test_sweep_csv_header_carries_units(tmp_path):
     assert header == ["omega [rad/s]", "frequency [Hz]", "amplitude [m]", "theory [m]"]
 
 
-def test_analyze_json_carries_units():
-    ball = json.loads(run_cli("analyze", ROOT / "configs" / "damped.toml", "--json",
-                              check=True).stdout)
+def test_analyze_json_carries_units(cli):
+    ball = json.loads(cli("analyze", ROOT / "configs" / "damped.toml", "--json",
+                          check=True).stdout)
     assert set(ball["unit"]) == set(ball["measured"]) == set(ball["theory"])
     assert ball["unit"]["period"] == "s" and ball["unit"]["damping_rate"] == "1/s"
     assert ball["unit"]["max_acceleration"] == "m/s^2" and ball["unit"]["energy_lost"] == "J"
     assert ball["dt_unit"] == ball["duration_unit"] == "s"
-    chain = json.loads(run_cli("analyze", ROOT / "configs" / "chain.toml", "--json",
-                               check=True).stdout)
+    chain = json.loads(cli("analyze", ROOT / "configs" / "chain.toml", "--json",
+                           check=True).stdout)
     assert chain["dt_unit"] == "s" and chain["lattice"]["k_unit"] == "N/m"
     assert chain["speed_of_sound"]["unit"] == "m/s"
     assert chain["dispersion"]["lowest"]["unit"] == "rad/s"

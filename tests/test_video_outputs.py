@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI
 from springscene import video
 from springscene.model.timeline import frame_steps
 from springscene.errors import OutputError
@@ -93,10 +93,10 @@ def test_an_ogg_of_a_still_scene_is_whole(tmp_path):
     assert "frame=    1 " in log.stderr.replace("\r", "\n")
 
 
-def test_render_writes_webm_and_ogg_a_wiki_takes(tmp_path):
+def test_render_writes_webm_and_ogg_a_wiki_takes(tmp_path, cli):
     for suffix, codec in ((".webm", "vp9"), (".ogv", "theora")):
         out = tmp_path / f"oscillation{suffix}"
-        proc = run_cli("render", WIKI, "--duration", 0.4, "--fps", 25, "--draft", "--quiet",
+        proc = cli("render", WIKI, "--duration", 0.4, "--fps", 25, "--draft", "--quiet",
                        "-q", "low", "--out", out)
         assert proc.returncode == 0 and proc.stderr == "", proc.stderr
         meta, frames = decode(out)
@@ -211,8 +211,8 @@ def test_quality_presets_differ_in_size(tmp_path, suffix):
         assert video.count_frames(tmp_path / f"{q}{suffix}") == 12
 
 
-def test_a_bad_quality_is_refused(tmp_path):
-    proc = run_cli("render", WIKI, "-q", "ultra", "--out", tmp_path / "v.mp4")
+def test_a_bad_quality_is_refused(tmp_path, cli):
+    proc = cli("render", WIKI, "-q", "ultra", "--out", tmp_path / "v.mp4")
     assert proc.returncode == 2 and "--quality" in proc.stderr and "ultra" in proc.stderr
     with pytest.raises(Exception, match="--quality 'ultra'"):
         video.open_encoder(tmp_path / "v.mp4", 25, (16, 16), "ultra")
@@ -221,9 +221,9 @@ def test_a_bad_quality_is_refused(tmp_path):
 
 # ---- frames that repeat ----------------------------------------------------------------
 
-def test_fps_above_the_physics_rate_warns_on_one_line(tmp_path):
+def test_fps_above_the_physics_rate_warns_on_one_line(tmp_path, cli):
     out = tmp_path / "v.mp4"
-    proc = run_cli("render", WIKI, "--duration", 0.1, "--fps", 200, "--draft", "--quiet",
+    proc = cli("render", WIKI, "--duration", 0.1, "--fps", 200, "--draft", "--quiet",
                    "--out", out)
     assert proc.returncode == 0, proc.stderr
     lines = proc.stderr.splitlines()
@@ -282,18 +282,18 @@ def read_only(tmp_path):
     (["still", "--draft"], "out.png"),
     (["simulate", "--duration", 5], "out.csv"),
 ])
-def test_a_full_disk_is_one_line_exit_1_and_nothing_left(full_disk, command, name):
+def test_a_full_disk_is_one_line_exit_1_and_nothing_left(full_disk, cli, command, name):
     out = full_disk / name
-    proc = run_cli(command[0], WIKI, *command[1:], "--out", out)
+    proc = cli(command[0], WIKI, *command[1:], "--out", out)
     assert proc.returncode == 1, proc.stderr
     assert proc.stderr.splitlines() == [f"springscene: no space left on device writing {out}"]
     assert proc.stdout == ""
     assert sorted(p.name for p in full_disk.iterdir()) == ["filler"]
 
 
-def test_a_read_only_folder_is_one_line_exit_1(read_only):
+def test_a_read_only_folder_is_one_line_exit_1(read_only, cli):
     out = read_only / "out.webm"
-    proc = run_cli("render", WIKI, "--duration", 0.2, "--draft", "--quiet", "--out", out)
+    proc = cli("render", WIKI, "--duration", 0.2, "--draft", "--quiet", "--out", out)
     assert proc.returncode == 1
     assert proc.stderr.splitlines() == [f"springscene: read-only file system writing {out}"]
     assert list(read_only.iterdir()) == []

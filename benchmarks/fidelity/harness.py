@@ -47,9 +47,11 @@ def _read_png(path: Path) -> np.ndarray:
     return np.asarray(Image.open(path).convert("RGB"))
 
 
-def springscene_picture(program: Path, out: Path) -> np.ndarray:
-    """springscene's still of ``program`` (the canvas alone where the runner can)."""
-    options = {"page": False}
+def springscene_picture(program: Path, out: Path, supervised: bool = True) -> np.ndarray:
+    """springscene's still of ``program`` (the canvas alone where the runner can): run in a
+    supervised child, or with ``supervised=False`` in this process (the tests: no new
+    Python a picture)."""
+    options = {"page": False, "supervised": supervised}
     if "canvas_only" in inspect.signature(jobs.vpython).parameters or \
             "canvas_only" in inspect.signature(jobs.run_program).parameters:
         options["canvas_only"] = True
@@ -72,14 +74,16 @@ def reference(scene: str, folder: Path = REFERENCE):
     return (_read_png(folder / f"{scene}.png"), _read_png(folder / f"{scene}.ids.png"), table)
 
 
-def measure(scene: str, work: Path, folder: Path = REFERENCE) -> dict:
+def measure(scene: str, work: Path, folder: Path = REFERENCE, supervised: bool = True) -> dict:
     """Draw ``scene`` and its ids variant with springscene into ``work`` and compare with
-    real VPython's: a dict with the comparison, the pictures and both numberings."""
+    real VPython's: a dict with the comparison, the pictures and both numberings
+    (``supervised``: :func:`springscene_picture`'s)."""
     work.mkdir(parents=True, exist_ok=True)
     real, real_ids, real_table = reference(scene, folder)
-    ours = springscene_picture(SCENES / f"{scene}.py", work / f"{scene}.springscene.png")
+    ours = springscene_picture(SCENES / f"{scene}.py", work / f"{scene}.springscene.png",
+                               supervised)
     prog, table_path = write_ids_program(scene, work)
-    ours_ids = springscene_picture(prog, work / f"{scene}.ids.springscene.png")
+    ours_ids = springscene_picture(prog, work / f"{scene}.ids.springscene.png", supervised)
     table = json.loads(table_path.read_text()) if table_path.exists() else []
     if ours.shape != real.shape:
         raise ValueError(f"{scene}: springscene drew {ours.shape[:2]}, VPython {real.shape[:2]}")

@@ -1,4 +1,7 @@
-"""Bad input: one line naming the file, key or flag; exit 2; no traceback; no output file."""
+"""Bad input: one line naming the file, key or flag; exit 2; no traceback; no output file.
+
+The command line runs in this process (the ``cli`` fixture); a few cases run it as the
+real command too, in a new process (``run_cli``), to show the two say the same."""
 
 from __future__ import annotations
 
@@ -44,10 +47,10 @@ BAD_CONFIGS = [
 
 
 @pytest.mark.parametrize("old, new, message", BAD_CONFIGS)
-def test_bad_config(tmp_path, old, new, message):
+def test_bad_config(tmp_path, cli, old, new, message):
     cfg = variant(tmp_path, old, new)
     out = tmp_path / "t.csv"
-    proc = run_cli("simulate", cfg, "--out", out)
+    proc = cli("simulate", cfg, "--out", out)
     assert proc.returncode == 2
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1, proc.stderr
@@ -79,9 +82,9 @@ def test_bad_config(tmp_path, old, new, message):
     (["vpython", EXAMPLES / "projectile.py", "--fps", "10" * 10, "--out", "{tmp}/v.mp4"],
      "the limit is 1000 frames per program second"),
 ])
-def test_bad_flags(tmp_path, args, message):
+def test_bad_flags(tmp_path, cli, args, message):
     args = [str(a).replace("{tmp}", str(tmp_path)) for a in args]
-    proc = run_cli(*args)
+    proc = cli(*args)
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and message in lines[0], proc.stderr
@@ -89,7 +92,7 @@ def test_bad_flags(tmp_path, args, message):
     assert list(tmp_path.iterdir()) == []
 
 
-def test_unwritable_output(tmp_path):
+def test_unwritable_output(tmp_path, cli):
     import os
 
     if os.geteuid() == 0:   # root may write to a 0555 folder; /proc refuses everyone
@@ -99,7 +102,7 @@ def test_unwritable_output(tmp_path):
         ro.mkdir()
         ro.chmod(0o555)
         target = ro / "t.csv"
-    proc = run_cli("simulate", WIKI, "--out", target)
+    proc = cli("simulate", WIKI, "--out", target)
     assert proc.returncode == 2, proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and str(target) in lines[0], proc.stderr
@@ -113,7 +116,7 @@ def test_unwritable_output(tmp_path):
     ("sweep", "run.csv", ("--omega", "10:12:3")),
     ("vpython", "prog.png", ()),
 ])
-def test_out_naming_the_input_is_refused(tmp_path, command, name, extra):
+def test_out_naming_the_input_is_refused(tmp_path, cli, command, name, extra):
     """A config or program saved under the output's extension must not be overwritten:
     one line, exit 2, the file untouched (also through a link)."""
     source = tmp_path / name
@@ -122,30 +125,30 @@ def test_out_naming_the_input_is_refused(tmp_path, command, name, extra):
     link = tmp_path / ("link" + source.suffix)
     link.symlink_to(source)
     for out in (source, link):
-        proc = run_cli(command, source, "--out", out, *extra)
+        proc = cli(command, source, "--out", out, *extra)
         assert proc.returncode == 2, proc.stderr
         lines = proc.stderr.strip().splitlines()
         assert len(lines) == 1 and "is the input" in lines[0] and "Traceback" not in proc.stderr
         assert source.read_text() == text
 
 
-def test_a_newline_in_a_section_name_stays_one_line(tmp_path):
+def test_a_newline_in_a_section_name_stays_one_line(tmp_path, cli):
     bad = tmp_path / "bad.toml"
     bad.write_text(GOOD + '\n["a\\nb\\u0007c"]\nx = 1\n')
-    proc = run_cli("simulate", bad, "--out", tmp_path / "x.csv")
+    proc = cli("simulate", bad, "--out", tmp_path / "x.csv")
     assert proc.returncode == 2
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "unknown section [a\\nb\\x07c]" in lines[0], proc.stderr
     assert not (tmp_path / "x.csv").exists()
 
 
-def test_deeply_nested_values_are_one_line(tmp_path):
+def test_deeply_nested_values_are_one_line(tmp_path, cli):
     value = "1"
     for _ in range(3000):
         value = "{a = " + value + "}"
     bad = tmp_path / "deep.toml"
     bad.write_text(GOOD + "\n[extra]\nx = " + value + "\n")
-    proc = run_cli("simulate", bad, "--out", tmp_path / "x.csv")
+    proc = cli("simulate", bad, "--out", tmp_path / "x.csv")
     assert proc.returncode == 2 and "Traceback" not in proc.stderr
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "nested too deeply" in lines[0], proc.stderr
@@ -168,12 +171,35 @@ def test_osmesa_missing_is_one_line(monkeypatch):
     (["still"], "springscene: error: still: the following arguments are required: config, --out"),
     (["bogus"], "springscene: error: argument command: invalid choice: 'bogus'"),
 ])
-def test_a_usage_error_starts_springscene_as_every_message_does(args, message):
+def test_a_usage_error_starts_springscene_as_every_message_does(cli, args, message):
     """argparse's own errors too (they said ``springscene render: error: ...``)."""
-    proc = run_cli(*[str(WIKI) if a == "CONFIG" else a for a in args])
+    proc = cli(*[str(WIKI) if a == "CONFIG" else a for a in args])
     assert proc.returncode == 2
     (line,) = proc.stderr.splitlines()
     assert line.startswith(message), line
+
+
+@pytest.mark.parametrize("case", ["bad config", "bad flag", "usage error"])
+def test_the_real_command_says_the_same_in_a_new_process(tmp_path, cli, case):
+    """The real command, started as a user starts it: its one line, its status, no
+    traceback, nothing written; and the same bytes as the command run in this process."""
+    if case == "bad config":
+        args = ["simulate", variant(tmp_path, "k = 15.0", "k = 0"), "--out", tmp_path / "t.csv"]
+        message = "bad.toml: [spring] k must be > 0"
+    elif case == "bad flag":
+        args = ["still", WIKI, "--time", "-1", "--out", tmp_path / "a.png"]
+        message = "--time must be >= 0, got -1"
+    else:
+        args = ["render", WIKI, "--fps", "abc"]
+        message = "springscene: error: render: argument --fps: invalid int value: 'abc'"
+    before = sorted(tmp_path.iterdir())
+    real = run_cli(*args)
+    assert real.returncode == 2, real.stderr
+    (line,) = real.stderr.splitlines()
+    assert line.startswith("springscene: error: ") and message in line, line
+    assert real.stdout == "" and sorted(tmp_path.iterdir()) == before
+    here = cli(*args)
+    assert (here.returncode, here.stdout, here.stderr) == (2, real.stdout, real.stderr)
 
 
 def test_a_config_saved_with_a_byte_order_mark_reads_as_without(tmp_path):

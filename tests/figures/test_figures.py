@@ -301,11 +301,11 @@ def test_figures_command_end_to_end(tmp_path):
 
 
 @pytest.mark.parametrize("make_bad", ["file", "under_a_file"])
-def test_bad_out_is_one_line_exit_2(tmp_path, make_bad):
+def test_bad_out_is_one_line_exit_2(tmp_path, cli, make_bad):
     afile = tmp_path / "figures.txt"
     afile.write_text("not a folder")
     out = afile if make_bad == "file" else afile / "sub"
-    proc = run_cli("figures", WIKI, "--out", out)
+    proc = cli("figures", WIKI, "--out", out)
     assert proc.returncode == 2
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "--out" in lines[0] and "Traceback" not in proc.stderr

@@ -10,7 +10,7 @@ import math
 import numpy as np
 import pytest
 
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI
 from springscene import build, config
 from springscene.model import integrators, physics
 from springscene.science import analysis, sweep, theory
@@ -94,24 +94,24 @@ def test_amplification_is_the_integrators_own_map():
     (("--integrator", "verlet", "--dt", "0.17"), ["unstable for verlet", "use dt <="]),
     (("--integrator", "euler", "--dt", "0.05"), ["unstable for euler", "per period"]),
 ])
-def test_unstable_step_is_refused(tmp_path, args, words):
+def test_unstable_step_is_refused(tmp_path, cli, args, words):
     out = tmp_path / "t.csv"
-    proc = run_cli("simulate", WIKI, "--duration", "1", "--out", out, *args)
+    proc = cli("simulate", WIKI, "--duration", "1", "--out", out, *args)
     assert proc.returncode == 2 and not out.exists()
     line, = proc.stderr.strip().splitlines()
     for w in words:
         assert w in line
 
 
-def test_unstable_step_in_a_file_names_the_key(tmp_path):
+def test_unstable_step_in_a_file_names_the_key(tmp_path, cli):
     bad = tmp_path / "bad.toml"
     bad.write_text("[physics]\ndt = 0.3\n")
-    proc = run_cli("analyze", bad)
+    proc = cli("analyze", bad)
     assert proc.returncode == 2
     assert f"{bad}: [physics] dt: dt = 0.3 s is unstable" in proc.stderr
     bad.write_text('[physics]\ndt = 0.2\nintegrator = "rk4"\n')   # RK4 is stable there...
-    assert run_cli("simulate", bad, "--duration", "2", "--out", tmp_path / "t.csv").returncode == 0
-    proc = run_cli("analyze", bad, "--duration", "2")   # ...but 2.6 steps a period measure nothing
+    assert cli("simulate", bad, "--duration", "2", "--out", tmp_path / "t.csv").returncode == 0
+    proc = cli("analyze", bad, "--duration", "2")   # ...but 2.6 steps a period measure nothing
     assert proc.returncode == 2 and "gives 2.57 steps a period" in proc.stderr
 
 
@@ -215,9 +215,9 @@ def test_sweep_against_analytic_curve():
     assert ap > 5 * result.amplitude[0]                    # a real resonance, Q = 12
 
 
-def test_sweep_cli_writes_curve(tmp_path):
+def test_sweep_cli_writes_curve(tmp_path, cli):
     out = tmp_path / "curve.csv"
-    proc = run_cli("sweep", DRIVEN, "--omega", "10:14:5", "--periods", "60", "--out", out,
+    proc = cli("sweep", DRIVEN, "--omega", "10:14:5", "--periods", "60", "--out", out,
                    check=True)
     assert "peak: measured" in proc.stdout
     rows = list(csv.reader(open(out)))
@@ -293,8 +293,8 @@ def test_analyze_wiki_against_theory(wiki):
     assert t["energy"] == pytest.approx(0.5 * 15 * 0.02 ** 2)
 
 
-def test_analyze_json_cli_damped():
-    proc = run_cli("analyze", DAMPED, "--json", check=True)
+def test_analyze_json_cli_damped(cli):
+    proc = cli("analyze", DAMPED, "--json", check=True)
     r = json.loads(proc.stdout)
     assert set(r["measured"]) == set(analysis.KEYS + analysis.DAMPED_KEYS)
     assert r["regime"] == "under-damped"
@@ -305,8 +305,8 @@ def test_analyze_json_cli_damped():
     assert m["energy_lost"] == pytest.approx(t["energy_lost"], rel=0.01)
 
 
-def test_analyze_table_cli():
-    proc = run_cli("analyze", DRIVEN, check=True)
+def test_analyze_table_cli(cli):
+    proc = cli("analyze", DRIVEN, check=True)
     assert "driven" in proc.stdout and "period" in proc.stdout and "%" in proc.stdout
 
 
@@ -322,10 +322,10 @@ def test_analyze_table_cli():
     ("[spring]\nyield_stretch = 0\n", "[spring] yield_stretch must be > 0"),
     ("[spring]\nk3 = -5\n", "[spring] k3 must be >= 0"),
 ])
-def test_bad_physics_keys_refused(tmp_path, toml, words):
+def test_bad_physics_keys_refused(tmp_path, cli, toml, words):
     bad = tmp_path / "bad.toml"
     bad.write_text(toml)
-    proc = run_cli("analyze", bad)
+    proc = cli("analyze", bad)
     assert proc.returncode == 2, proc.stderr
     line, = proc.stderr.strip().splitlines()
     assert str(bad) in line and words in line
@@ -335,16 +335,16 @@ def test_bad_physics_keys_refused(tmp_path, toml, words):
     ("6:18:0", "empty sweep"), ("6:18", "expected START:STOP:N"), ("0:18:10", "must be > 0"),
     ("18:6:10", "STOP must not be below START"), ("a:b:c", "must be numbers"),
 ])
-def test_bad_sweeps_refused(tmp_path, omega, words):
+def test_bad_sweeps_refused(tmp_path, cli, omega, words):
     out = tmp_path / "c.csv"
-    proc = run_cli("sweep", DRIVEN, "--omega", omega, "--out", out)
+    proc = cli("sweep", DRIVEN, "--omega", omega, "--out", out)
     assert proc.returncode == 2 and not out.exists()
     line, = proc.stderr.strip().splitlines()
     assert "--omega" in line and words in line
 
 
-def test_sweep_needs_drive_and_damping(tmp_path):
-    proc = run_cli("sweep", WIKI, "--omega", "6:18:10")
+def test_sweep_needs_drive_and_damping(tmp_path, cli):
+    proc = cli("sweep", WIKI, "--omega", "6:18:10")
     assert proc.returncode == 2 and "needs a [drive] section" in proc.stderr
     with pytest.raises(UserError, match=r"\[damping\] b > 0"):
         sweep.check_sweepable(config.override(config.load(DRIVEN), "damping", b=0.0))
@@ -355,8 +355,8 @@ def test_sweep_needs_drive_and_damping(tmp_path):
     (DRIVEN, "5", "--duration 5 s is too short to analyze"),
     (WIKI, "-1", "--duration must be >= 0"),
 ])
-def test_analyze_refuses_too_short_runs(config_path, duration, words):
-    proc = run_cli("analyze", config_path, "--duration", duration)
+def test_analyze_refuses_too_short_runs(cli, config_path, duration, words):
+    proc = cli("analyze", config_path, "--duration", duration)
     assert proc.returncode == 2
     line, = proc.stderr.strip().splitlines()
     assert words in line
@@ -372,19 +372,19 @@ def test_analyze_refuses_too_short_runs(config_path, duration, words):
     ('[damping]\nb = 0.1\n[drive]\ntype = "force"\namplitude = 0.01\nomega = 628\n', "analyze",
      "[drive] omega: a drive at 628 rad/s needs dt <="),
 ])
-def test_physics_that_cannot_be_measured_is_refused(tmp_path, toml, command, words):
+def test_physics_that_cannot_be_measured_is_refused(tmp_path, cli, toml, command, words):
     bad = tmp_path / "bad.toml"
     bad.write_text(toml)
     out = tmp_path / "t.csv"
     args = ("--out", out) if command == "simulate" else ()
-    proc = run_cli(command, bad, *args)
+    proc = cli(command, bad, *args)
     assert proc.returncode == 2 and not out.exists()
     line, = proc.stderr.strip().splitlines()
     assert words in line
 
 
-def test_sweep_refuses_drives_faster_than_the_step():
-    proc = run_cli("sweep", DRIVEN, "--omega", "1e6:1e7:3")
+def test_sweep_refuses_drives_faster_than_the_step(cli):
+    proc = cli("sweep", DRIVEN, "--omega", "1e6:1e7:3")
     assert proc.returncode == 2
     assert "--omega: a drive at 1e+07 rad/s needs dt <=" in proc.stderr
 

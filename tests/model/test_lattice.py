@@ -8,7 +8,7 @@ import tracemalloc
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_cli
+from conftest import ROOT
 from springscene import build, config, render
 from springscene.model import lattice, physics
 from springscene.model.constants import BOLTZMANN
@@ -206,9 +206,9 @@ def test_frame_steps_follow_the_speed():
     assert steps[-1] == round(299 * 1e-12 / 50 / 2e-15)
 
 
-def test_simulate_lattice_csv(tmp_path):
+def test_simulate_lattice_csv(tmp_path, cli):
     out = tmp_path / "chain.csv"
-    proc = run_cli("simulate", CONFIGS / "chain.toml", "--duration", "1", "--out", out)
+    proc = cli("simulate", CONFIGS / "chain.toml", "--duration", "1", "--out", out)
     assert proc.returncode == 0, proc.stderr
     rows = np.loadtxt(out, delimiter=",", skiprows=1)
     assert out.read_text().splitlines()[0] == ",".join(render.LATTICE_CSV_HEADER)
@@ -261,9 +261,9 @@ def test_lattice_sections_need_a_lattice():
         config.from_dict({"render": {"color_by": "speed"}}, source="x.toml")
 
 
-def test_bad_speed_flag(tmp_path):
+def test_bad_speed_flag(tmp_path, cli):
     out = tmp_path / "v.mp4"
-    proc = run_cli("render", CONFIGS / "chain.toml", "--speed", "-1", "--out", out)
+    proc = cli("render", CONFIGS / "chain.toml", "--speed", "-1", "--out", out)
     assert proc.returncode == 2
     assert proc.stderr.strip().count("\n") == 0 and "--speed must be > 0" in proc.stderr
     assert not out.exists()

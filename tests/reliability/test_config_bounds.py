@@ -21,9 +21,8 @@ try:
 except ModuleNotFoundError:                     # Python 3.10
     import tomli as tomllib
 
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI
 from springscene import build, config, ranges, render
-from springscene.app import cli
 from springscene.errors import UserError
 from springscene.model import physics
 from springscene.view import camera
@@ -52,13 +51,12 @@ def variant(tmp_path: Path, base: Path, section: str, key: str, value: str) -> P
     return path
 
 
-def refused(capsys, args: list, path: Path, *words: str) -> str:
-    """Run the CLI in-process: exit 2, one line naming ``path`` and ``words``, and the
-    config's folder holds nothing new."""
-    capsys.readouterr()
-    status = cli.main([str(a) for a in args])
-    err = capsys.readouterr().err
-    assert status == 2, err
+def refused(cli, args: list, path: Path, *words: str) -> str:
+    """Run the CLI in-process (the ``cli`` fixture): exit 2, one line naming ``path`` and
+    ``words``, and the config's folder holds nothing new."""
+    proc = cli(*args)
+    err = proc.stderr
+    assert proc.returncode == 2, err
     assert len(err.splitlines()) == 1 and err.startswith("springscene: error: "), err
     assert "Traceback" not in err
     for word in (str(path), *words):
@@ -80,16 +78,16 @@ BLANK_PICTURES = [     # exit 0 with a blank or garbage picture before
 
 
 @pytest.mark.parametrize("section, key, value", BLANK_PICTURES)
-def test_a_value_that_would_draw_a_blank_picture_is_refused(tmp_path, capsys, section, key,
+def test_a_value_that_would_draw_a_blank_picture_is_refused(tmp_path, cli, section, key,
                                                             value):
     path = variant(tmp_path, WIKI, section, key, value)
-    refused(capsys, ["still", path, "--draft", "--out", path.parent / "o.png"], path,
+    refused(cli, ["still", path, "--draft", "--out", path.parent / "o.png"], path,
             f"[{section}] {key}")
 
 
-def test_a_video_of_a_huge_spring_is_refused_before_a_frame(tmp_path, capsys):
+def test_a_video_of_a_huge_spring_is_refused_before_a_frame(tmp_path, cli):
     path = variant(tmp_path, WIKI, "spring", "radius", "1e308")
-    err = refused(capsys, ["render", path, "--duration", "0.2", "--draft", "--quiet", "--out",
+    err = refused(cli, ["render", path, "--duration", "0.2", "--draft", "--quiet", "--out",
                            path.parent / "o.mp4"], path, "[spring] radius")
     assert "between" in err and " m " in err
 
@@ -105,27 +103,27 @@ MISATTRIBUTED = [      # blamed yield_stretch (never set) or "use a smaller --dt
 
 
 @pytest.mark.parametrize("section, key, value, command", MISATTRIBUTED)
-def test_a_huge_physical_value_is_blamed_on_its_own_key(tmp_path, capsys, section, key, value,
+def test_a_huge_physical_value_is_blamed_on_its_own_key(tmp_path, cli, section, key, value,
                                                         command):
     path = variant(tmp_path, WIKI, section, key, value)
     out = path.parent / ("o.csv" if command == "simulate" else "o.png")
-    err = refused(capsys, [command, path, "--out", out], path, f"[{section}] {key}")
+    err = refused(cli, [command, path, "--out", out], path, f"[{section}] {key}")
     assert "yield_stretch" not in err and "blew up" not in err
 
 
 @pytest.mark.parametrize("key, value", [("amplitude", "1e308"), ("omega", "1e308")])
-def test_a_huge_drive_is_blamed_on_its_key(tmp_path, capsys, key, value):
+def test_a_huge_drive_is_blamed_on_its_key(tmp_path, cli, key, value):
     path = variant(tmp_path, ROOT / "configs" / "driven.toml", "drive", key, value)
-    refused(capsys, ["simulate", path, "--out", path.parent / "o.csv"], path, f"[drive] {key}")
+    refused(cli, ["simulate", path, "--out", path.parent / "o.csv"], path, f"[drive] {key}")
 
 
 @pytest.mark.parametrize("command, out", [("still", "o.png"), ("render", "o.mp4"),
                                           ("simulate", "o.csv")])
-def test_a_crystal_of_absurd_molar_mass_is_refused(tmp_path, capsys, command, out):
+def test_a_crystal_of_absurd_molar_mass_is_refused(tmp_path, cli, command, out):
     """Was: a NaN traceback from the colour bar (still, render), nan columns (simulate)."""
     path = variant(tmp_path, CRYSTAL, "atom", "molar_mass", "1e308")
     extra = ["--draft", "--duration", "2e-14"] if command == "render" else []
-    refused(capsys, [command, path, *extra, "--out", path.parent / out], path,
+    refused(cli, [command, path, *extra, "--out", path.parent / out], path,
             "[atom] molar_mass", "kg/mol")
 
 
@@ -134,24 +132,23 @@ def test_a_crystal_of_absurd_molar_mass_is_refused(tmp_path, capsys, command, ou
     ("start", "temperature", "1e8"), ("atom", "radius", "1e308"), ("bond", "radius", "1e-300"),
     ("camera", "range", "1e308"),
 ])
-def test_a_crystal_key_out_of_range_is_named(tmp_path, capsys, section, key, value):
+def test_a_crystal_key_out_of_range_is_named(tmp_path, cli, section, key, value):
     path = variant(tmp_path, CRYSTAL, section, key, value)
-    refused(capsys, ["simulate", path, "--out", path.parent / "o.csv"], path,
+    refused(cli, ["simulate", path, "--out", path.parent / "o.csv"], path,
             f"[{section}] {key}")
 
 
-def test_a_speed_that_leaves_no_frame_is_named(tmp_path, capsys):
-    capsys.readouterr()
+def test_a_speed_that_leaves_no_frame_is_named(tmp_path, cli):
     out = tmp_path / "o.mp4"
-    status = cli.main(["render", str(WIKI), "--speed", "1e308", "--duration", "0.5", "--draft",
-                       "--quiet", "--out", str(out)])
-    err = capsys.readouterr().err
-    assert status == 2 and len(err.splitlines()) == 1, err
+    proc = cli("render", WIKI, "--speed", "1e308", "--duration", "0.5", "--draft", "--quiet",
+               "--out", out)
+    err = proc.stderr
+    assert proc.returncode == 2 and len(err.splitlines()) == 1, err
     assert "--speed 1e+308" in err and "no frame" in err
     assert list(tmp_path.iterdir()) == []
 
 
-def test_a_huge_but_finite_up_is_only_a_direction(tmp_path):
+def test_a_huge_but_finite_up_is_only_a_direction(tmp_path, cli):
     """`up` = [1e308, 1e308, 0] is the direction [1, 1, 0]: no error, the same picture."""
     cfg = config.load(variant(tmp_path, WIKI, "camera", "up", "[1e308, 1e308, 0]"))
     x, y, z = cfg.camera.up
@@ -160,7 +157,7 @@ def test_a_huge_but_finite_up_is_only_a_direction(tmp_path):
     for up in ("[1e308, 1e308, 0]", "[1, 1, 0]"):
         path = variant(tmp_path, WIKI, "camera", "up", up)
         out = path.parent / "o.png"
-        proc = run_cli("still", path, "--draft", "--out", out)
+        proc = cli("still", path, "--draft", "--out", out)
         assert proc.returncode == 0, proc.stderr
         pictures.append(out.read_bytes())
     assert pictures[0] == pictures[1]

@@ -17,7 +17,7 @@ import imageio.v3 as iio
 import numpy as np
 import pytest
 
-from conftest import ROOT, run_cli
+from conftest import ROOT
 from springscene import config
 from springscene.science import matter
 from springscene.errors import UserError
@@ -221,8 +221,8 @@ def test_thermal_chain_has_no_harmonic_theory():
 
 # ---- the command line --------------------------------------------------------------------
 
-def test_cli_analyze_json():
-    proc = run_cli("analyze", CONFIGS / "chain.toml", "--json", check=True)
+def test_cli_analyze_json(cli):
+    proc = cli("analyze", CONFIGS / "chain.toml", "--json", check=True)
     r = json.loads(proc.stdout)
     for key in ("config", "lattice", "integrator", "dt", "duration", "speed_of_sound",
                 "dispersion"):
@@ -235,8 +235,8 @@ def test_cli_analyze_json():
     assert len(r["dispersion"]["q"]) == len(r["dispersion"]["measured"]) == 18
 
 
-def test_cli_analyze_table():
-    proc = run_cli("analyze", CONFIGS / "bar.toml", check=True)
+def test_cli_analyze_table(cli):
+    proc = cli("analyze", CONFIGS / "bar.toml", check=True)
     lines = proc.stdout.splitlines()
     assert lines[0].startswith(str(CONFIGS / "bar.toml"))
     row = next(line for line in lines if line.startswith("Young's modulus"))
@@ -248,14 +248,14 @@ def test_cli_analyze_table():
     (["chain-aluminum.toml", "--duration", "6e-12"], "--duration 6e-12 s is too short"),
     (["NOTHING", ], "nothing to measure"),
 ])
-def test_cli_bad_case(tmp_path, args, message):
+def test_cli_bad_case(tmp_path, cli, args, message):
     if args[0] == "NOTHING":
         text = (CONFIGS / "chain.toml").read_text().replace("kick = [0.5, 0, 0]", "")
         path = tmp_path / "still.toml"
         path.write_text(text)
     else:
         path = CONFIGS / args[0]
-    proc = run_cli("analyze", path, *args[1:])
+    proc = cli("analyze", path, *args[1:])
     assert proc.returncode == 2
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "Traceback" not in proc.stderr
@@ -263,8 +263,8 @@ def test_cli_bad_case(tmp_path, args, message):
     assert proc.stdout == ""
 
 
-def test_cli_figures(tmp_path):
-    proc = run_cli("figures", CONFIGS / "chain.toml", "--out", tmp_path, check=True)
+def test_cli_figures(tmp_path, cli):
+    proc = cli("figures", CONFIGS / "chain.toml", "--out", tmp_path, check=True)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["dispersion.png", "pulse.png"]
     for name in ("dispersion.png", "pulse.png"):
         path = tmp_path / name
@@ -274,17 +274,17 @@ def test_cli_figures(tmp_path):
         assert img.shape[1] == 800 and img.shape[0] >= 500
 
 
-def test_cli_figures_leave_nothing_on_error(tmp_path):
+def test_cli_figures_leave_nothing_on_error(tmp_path, cli):
     bar = tmp_path / "bar.toml"
     text, n = re.subn(r"^b = .*$", "b = 0.0", (CONFIGS / "bar.toml").read_text(), flags=re.M)
     assert n == 1
     bar.write_text(text)
     out = tmp_path / "figs"
-    proc = run_cli("figures", bar, "--out", out)
+    proc = cli("figures", bar, "--out", out)
     assert proc.returncode == 2 and "has not settled" in proc.stderr
     assert not out.exists()                      # the folder it made is gone too
     out.mkdir()
-    proc = run_cli("figures", bar, "--out", out)
+    proc = cli("figures", bar, "--out", out)
     assert proc.returncode == 2 and out.is_dir() and list(out.iterdir()) == []
 
 

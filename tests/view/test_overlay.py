@@ -82,9 +82,9 @@ def test_parse_overlays():
     assert parse_overlays(",".join(OVERLAYS)) == OVERLAYS
 
 
-def test_unknown_overlay_is_bad_input(tmp_path):
+def test_unknown_overlay_is_bad_input(tmp_path, cli):
     out = tmp_path / "v.mp4"
-    proc = run_cli("render", WIKI, "--overlay", "clock", "--out", out)
+    proc = cli("render", WIKI, "--overlay", "clock", "--out", out)
     assert proc.returncode == 2
     lines = proc.stderr.strip().splitlines()
     assert len(lines) == 1 and "--overlay" in lines[0] and "'clock'" in lines[0]

@@ -109,9 +109,9 @@ def test_info_reports_each_backend():
         assert "GL renderer:" in proc.stdout and "vtk: 9." in proc.stdout
 
 
-def test_simulate_csv(tmp_path, wiki_cfg):
+def test_simulate_csv(tmp_path, cli, wiki_cfg):
     out = tmp_path / "traj.csv"
-    run_cli("simulate", WIKI, "--duration", 1.0, "--out", out, check=True)
+    cli("simulate", WIKI, "--duration", 1.0, "--out", out, check=True)
     with open(out) as fh:
         rows = list(csv.reader(fh))
     assert rows[0] == ["t [s]", "x [m]", "y [m]", "z [m]", "px [kg m/s]", "py [kg m/s]",

@@ -62,7 +62,7 @@ def test_real_vpythons_id_picture_shows_every_object(scene):
 
 @pytest.mark.parametrize("scene", SCENES)
 def test_springscene_against_real_vpython(scene, tmp_path):
-    m = harness.measure(scene, tmp_path)
+    m = harness.measure(scene, tmp_path, supervised=False)
     c = m["comparison"]
     bad = []
     for o in c.objects:
@@ -89,10 +89,11 @@ def test_the_comparison_catches_a_small_change(tmp_path):
     prog = tmp_path / "shapes_basic.py"
     prog.write_text(changed)
     real, real_ids, table = harness.reference("shapes_basic")
-    ours = harness.springscene_picture(prog, tmp_path / "ours.png")
+    ours = harness.springscene_picture(prog, tmp_path / "ours.png", supervised=False)
     ids_prog = tmp_path / "ids.py"
     ids_prog.write_text(ids_program(changed, str(tmp_path / "ids.json")))
-    ours_ids = harness.springscene_picture(ids_prog, tmp_path / "ours.ids.png")
+    ours_ids = harness.springscene_picture(ids_prog, tmp_path / "ours.ids.png",
+                                           supervised=False)
     c = imagediff.compare_scene(real, ours, real_ids, ours_ids, PALETTE,
                                 harness.object_names(table))
     failing = [o.name for o in c.objects if not o.passes()]

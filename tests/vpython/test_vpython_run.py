@@ -387,10 +387,10 @@ def test_syntax_error_and_exit_status(tmp_path):
     (["{prog}", "--out", "{tmp}/x.mp4", "--overlay", "energy"], "unknown overlay"),
     (["{prog}", "--out", "{tmp}/x.gif", "--fps", "60"], "GIF"),
 ])
-def test_bad_flags_are_one_line_exit_2(tmp_path, args, message):
+def test_bad_flags_are_one_line_exit_2(tmp_path, cli, args, message):
     prog = write(tmp_path, "from vpython import *\nsphere()\n")
     args = [a.format(tmp=tmp_path, prog=prog) for a in args]
-    proc = run_cli("vpython", *args)
+    proc = cli("vpython", *args)
     assert proc.returncode == 2, proc.stderr
     assert message in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
     assert not list(tmp_path.glob("x.*"))
