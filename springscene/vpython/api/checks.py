@@ -22,3 +22,13 @@ def _vec(value, name: str) -> vector:
         return as_vector(value, name)
     except TypeError:
         raise TypeError(f"{name} must be a vector") from None
+
+
+def one_of(*choices):
+    """A check that a value is one of ``choices``, VPython's ``ValueError`` if not
+    ("trail_type must be 'curve' or 'points'")."""
+    def check(value, name: str):
+        if value not in choices:
+            raise ValueError(f"{name} must be {' or '.join(map(repr, choices))}")
+        return value
+    return check
