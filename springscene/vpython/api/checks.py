@@ -1,9 +1,11 @@
 """What every VPython object checks in what a program gives it.
 
 A vector argument is copied (so the program's own vector is never linked to the
-object) and anything else is VPython's ``TypeError``. A name VPython has and
-springscene lacks fails with an :class:`UnsupportedError` naming it (the package's
-``__getattr__``). Used by the canvas, the objects and curves.
+object) and anything else is VPython's ``TypeError``; a choice among a few words
+(``trail_type``) is VPython's ``ValueError`` naming them (:func:`one_of`). A name
+VPython has and springscene lacks fails with an :class:`UnsupportedError` naming it
+(the package's ``__getattr__``). Used by the canvas, the objects and curves, and as the
+checks of their :class:`.attributes.Linked` attributes.
 """
 
 from __future__ import annotations
