@@ -5,16 +5,18 @@ refused as VPython words it; nothing kept per object."""
 
 from __future__ import annotations
 
+import operator
 import traceback
 
 import pytest
 
 import springscene.vpython.api as vpython_module
-from springscene.vpython.api import attributes, shared_defaults
+from springscene.vpython.api import attributes, checks, shared_defaults
 from springscene.vpython.api.attributes import Linked
 from springscene.vpython.api.checks import _vec, one_of
 from springscene.vpython.api.shared_defaults import Default
 from springscene.vpython.api.vectors import vector
+from springscene.vpython.run import runner
 
 
 class Thing:
@@ -97,6 +99,18 @@ def test_a_change_marks_the_object_changed_or_calls_its_method():
     assert t.moves == 2 and t.pos == vector(1, 2, 3) and t.kind == "points"
 
 
+def test_a_change_calls_the_method_as_the_object_s_class_has_it():
+    class Counted(Thing):
+        def _moved(self) -> None:
+            self.moves += 10
+
+    c = Counted()
+    c.kind = "points"
+    c.pos = (0, 0, 0)
+    c.pos.x = 1
+    assert c.moves == 30
+
+
 def test_a_hooked_vector_is_the_object_s_own_and_its_changes_reach_it():
     t = Thing()
     mine = vector(1, 2, 3)
@@ -164,21 +178,21 @@ def test_the_class_holds_plain_properties_and_the_object_only_its_values():
     t.radius, t.count, t.pos = 1, 2, vector(0, 0, 0)
     assert set(vars(t)) - before == {"_radius", "_count", "_pos", "_dirty"}
     for name in ("radius", "pos", "spin", "canvas", "owner"):
-        assert type(vars(Thing)[name]) is property      # CPython's fastest path
+        assert type(vars(Thing)[name]) is property
+    assert type(Thing.radius.fget) is operator.attrgetter      # a plain read runs no Python
 
 
-def test_a_write_s_frame_is_the_package_s_and_named_after_the_attribute():
+def test_a_write_s_frames_are_the_package_s_and_left_out_of_the_program_s_line():
     """The runner reports the program's innermost line (:func:`..run.runner._program_line`)
-    by leaving out frames inside springscene."""
+    by leaving out frames inside springscene: a write's and its check's are."""
     t = Thing()
     try:
         t.pos = "left"
     except TypeError as exc:
         frames = traceback.extract_tb(exc.__traceback__)
-    assert frames[1].filename == attributes.__file__ and frames[1].name == "pos"
-    write = Thing.pos.fset
-    assert write.__name__ == "pos" and "_pos" in write.__code__.co_names
-    assert "_STORE" not in write.__code__.co_names
+        where = runner._program_line(exc)
+    assert [f.filename for f in frames[1:]] == [attributes.__file__, checks.__file__]
+    assert where == f"{frames[0].filename}, line {frames[0].lineno}: "
 
 
 @pytest.mark.parametrize("args", [

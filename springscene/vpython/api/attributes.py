@@ -13,21 +13,21 @@ method of the object, such as a curve's ``_touch``). A class says that in one li
     canvas = Linked(readonly="canvas cannot be modified")
 
 :class:`Linked` is a declaration, not the descriptor a program meets: when its class is
-made (``__set_name__``) it puts in its place a plain ``property`` whose read and write
-are copies of the templates below with the attribute's own names written into them
-(:func:`_named`), so each runs the bytecode a hand-written property would, with
-``self._pos`` and ``self._on_pos_change()`` in it. The attribute path is hot (a program
-sets ``pos`` thousands of times a second), and CPython runs a ``property`` of plain
-functions faster than a descriptor with a Python ``__get__``/``__set__``, or a template
-that looks its names up (``getattr(self, store)``): on 3.11 a read costs 45 ns against
-77 ns, a write 250 against 340 (measured); 3.12 and later inline a property's read.
-Nothing is stored per object: the property is the class's.
+made (``__set_name__``) it puts in its place a plain ``property``. Its read is
+``operator.attrgetter(store)``, or for a ``live`` vector a small function that hooks the
+vector on a program's first read. Its write is a small function over the attribute's
+slot, check and change method, one a kind of change (:func:`_typed_writers`,
+:func:`_named_writers`), chosen when the class is made, so that a write tests nothing
+about its declaration. Writes go through ``setattr``, so a class's own ``__setattr__``
+(an extrusion's, 3D text's, a shared default vector's) sees them as it would
+``self._pos = value``. Nothing is stored per object: the property is the class's.
 """
 
 from __future__ import annotations
 
-from types import FunctionType
-from typing import Any, Callable
+from operator import attrgetter
+from sys import intern
+from typing import Callable
 
 _READ_ONLY = object()      # ``readonly=True``: Python's own "has no setter" refusal
 
@@ -100,49 +100,44 @@ class Linked:
 
     def build(self, name: str) -> property:
         """The ``property`` this declaration makes for the attribute ``name``."""
-        store = self.store or "_" + name
-        fget = self.get or _named(_read_live if self.live else _read, name, store)
+        store = intern(self.store or "_" + name)    # the slot's name, as an attribute's is
+        fget = self.get or (_live_reader(store) if self.live else attrgetter(store))
         if self.readonly is _READ_ONLY:
             fset = None
         elif self.readonly is not None:
-            fset = _named(_refuser(self.readonly.replace("{name}", name)), name, store)
+            fset = _refuser(self.readonly.replace("{name}", name))
         elif self.set is not None:
             fset = self.set
         else:
-            fset = _named(_writer(self, name), name, store, self.then)
+            fset = _writer(self, name, store)
         return property(fget, fset, None, self.doc and self.doc.replace("{name}", name))
 
 
-# -- the reads and writes, each a template: ``_STORE`` and ``_THEN`` are placeholders that
-# -- :func:`_named` replaces by the attribute's slot and its change method
-
-def _read(self):
-    return self._STORE
-
-
-def _read_live(self):
-    v = self._STORE
-    if v._on_change is None:         # hooked on a program's first read
-        v = self._live("_STORE")
-    return v
+def _live_reader(store: str) -> Callable:
+    def read(self):
+        v = getattr(self, store)
+        if v._on_change is None:         # hooked on a program's first read
+            v = self._live(store)
+        return v
+    return read
 
 
 def _as_given(value):
     return value
 
 
-def _writer(d: Linked, name: str) -> FunctionType:
-    """The write ``d`` declares, before :func:`_named`: one template a kind of change, in
-    two families, one for a type (``convert(value)``), one for a check that names the
-    attribute (``convert(value, name)``), so that no write tests which it is."""
+def _writer(d: Linked, name: str, store: str) -> Callable:
+    """The write ``d`` declares: one a kind of change, in two families, one for a type
+    (``convert(value)``), one for a check that names the attribute (``convert(value,
+    name)``), so that no write tests which it is."""
     convert = _as_given if d.convert is None else d.convert
     if isinstance(convert, type) or convert is _as_given:
         if d.hook:
             raise TypeError(f"Linked {name}: hook=True needs a vector check such as _vec")
-        return _typed_writers(convert)["notify" if d.notify else _action(d)]
+        return _typed_writers(convert, store, d.then)["notify" if d.notify else _action(d)]
     if d.notify:
         raise TypeError(f"Linked {name}: notify=True is a vector component's: convert=float")
-    return _named_writers(convert, name)[_action(d)]
+    return _named_writers(convert, name, store, d.then)[_action(d)]
 
 
 def _action(d: Linked) -> str:
@@ -151,61 +146,49 @@ def _action(d: Linked) -> str:
     return "dirty" if d.dirty else "store"
 
 
-def _typed_writers(convert: Callable) -> dict[str, FunctionType]:
-    def store(self, value):
-        self._STORE = convert(value)
+def _typed_writers(convert: Callable, store: str, then: str | None) -> dict[str, Callable]:
+    def write(self, value):
+        setattr(self, store, convert(value))
 
-    def dirty(self, value):
-        self._STORE = convert(value)
+    def write_dirty(self, value):
+        setattr(self, store, convert(value))
         self._dirty = True
 
-    def then(self, value):
-        self._STORE = convert(value)
-        self._THEN()
+    def write_then(self, value):
+        setattr(self, store, convert(value))
+        getattr(self, then)()
 
-    def notify(self, value):
-        self._STORE = convert(value)
+    def write_notify(self, value):
+        setattr(self, store, convert(value))
         if self._on_change is not None:
             self._on_change()
 
-    return {"store": store, "dirty": dirty, "then": then, "notify": notify}
+    return {"store": write, "dirty": write_dirty, "then": write_then, "notify": write_notify}
 
 
-def _named_writers(convert: Callable, name: str) -> dict[str, FunctionType]:
-    def store(self, value):
-        self._STORE = convert(value, name)
+def _named_writers(convert: Callable, name: str, store: str,
+                   then: str | None) -> dict[str, Callable]:
+    def write(self, value):
+        setattr(self, store, convert(value, name))
 
-    def dirty(self, value):
-        self._STORE = convert(value, name)
+    def write_dirty(self, value):
+        setattr(self, store, convert(value, name))
         self._dirty = True
 
-    def then(self, value):
-        self._STORE = convert(value, name)
-        self._THEN()
+    def write_then(self, value):
+        setattr(self, store, convert(value, name))
+        getattr(self, then)()
 
-    def hooked(self, value):
-        value = self._STORE = convert(value, name)
-        changed = value._on_change = self._THEN
+    def write_hooked(self, value):
+        value = convert(value, name)
+        setattr(self, store, value)
+        changed = value._on_change = getattr(self, then)
         changed()
 
-    return {"store": store, "dirty": dirty, "then": then, "hooked": hooked}
+    return {"store": write, "dirty": write_dirty, "then": write_then, "hooked": write_hooked}
 
 
-def _refuser(message: str) -> FunctionType:
+def _refuser(message: str) -> Callable:
     def refuse(self, value):
         raise AttributeError(message)
     return refuse
-
-
-def _named(template: FunctionType, name: str, store: str, then: str | None = None) -> Any:
-    """``template`` as the attribute ``name``'s own function: its placeholder names
-    ``_STORE`` and ``_THEN`` read as ``store`` and ``then``, its frames named ``name``."""
-    code = template.__code__
-    swap = {"_STORE": store, "_THEN": then or "_THEN"}
-    code = code.replace(co_names=tuple(swap.get(n, n) for n in code.co_names), co_name=name,
-                        co_consts=tuple(swap.get(c, c) if isinstance(c, str) else c
-                                        for c in code.co_consts))
-    if hasattr(code, "co_qualname"):        # 3.11+: what a traceback shows
-        code = code.replace(co_qualname=name)
-    return FunctionType(code, template.__globals__, name, template.__defaults__,
-                        template.__closure__)
