@@ -8,6 +8,7 @@ a frame. :mod:`.objects`, :mod:`.curves` and :mod:`.labels` build on :class:`_Ba
 
 from __future__ import annotations
 
+from .attributes import Linked
 from .canvases import canvas
 
 
@@ -51,22 +52,8 @@ class _Base:
     def _touch(self) -> None:
         self._dirty = True
 
-    @property
-    def canvas(self):
-        return self._canvas
-
-    @canvas.setter
-    def canvas(self, value) -> None:
-        raise AttributeError("canvas cannot be modified")
-
-    @property
-    def visible(self) -> bool:
-        return self._visible
-
-    @visible.setter
-    def visible(self, value) -> None:
-        self._visible = bool(value)
-        self._dirty = True
+    canvas = Linked(readonly="canvas cannot be modified")
+    visible = Linked(bool, dirty=True)
 
     def delete(self) -> None:
         """Remove the object from its canvas, as VPython's ``obj.delete()`` does."""

@@ -24,6 +24,7 @@ import re
 from ...errors import OutputError, UserError
 from ...view.scene import LIGHTS
 from . import runtime, widgets
+from .attributes import Linked
 from .checks import _vec
 from .page_order import claim_slot
 from .vectors import is_lenient, vector
@@ -80,6 +81,14 @@ def _side(cv: "canvas", name: str, value):
         shown = repr(value) if len(repr(value)) <= 40 else repr(value)[:37] + "..."
         need = "a number of pixels" if ok is None else f"1 to {MAX_SIDE} pixels"
         raise CanvasSizeError(f"{who}.{name} = {shown}: a canvas {name} must be {need}")
+    return value
+
+
+def _direction(value, name: str) -> vector:
+    """``value`` as a vector that can be a direction: not the zero vector."""
+    value = _vec(value, name)
+    if value.mag2 == 0:
+        raise ValueError(f"{name} cannot be the zero vector")
     return value
 
 
@@ -337,9 +346,9 @@ class canvas:
     def delete(self) -> None:
         self._visible = False
 
-    visible = property(lambda self: self._visible,
-                       lambda self, v: setattr(self, "_visible", bool(v)))
+    visible = Linked(bool)
 
+    # width and height are checked with the canvas (the message names scene or canvas)
     width = property(lambda self: self._width,
                      lambda self, v: setattr(self, "_width", _side(self, "width", v)))
     height = property(lambda self: self._height,
@@ -347,9 +356,8 @@ class canvas:
 
     # -- page text -----------------------------------------------------------------------
 
-    title = property(lambda self: self._title, lambda self, v: setattr(self, "_title", str(v)))
-    caption = property(lambda self: self._caption,
-                       lambda self, v: setattr(self, "_caption", str(v)))
+    title = Linked(str)
+    caption = Linked(str)
 
     def append_to_title(self, *args) -> None:
         self._title += "".join(str(a) for a in args)
@@ -359,29 +367,15 @@ class canvas:
 
     # -- colours -------------------------------------------------------------------------
 
-    background = property(lambda self: self._background,
-                          lambda self, v: setattr(self, "_background", _vec(v, "background")))
-    foreground = property(lambda self: self._foreground,
-                          lambda self, v: setattr(self, "_foreground", _vec(v, "foreground")))
-    ambient = property(lambda self: self._ambient,
-                       lambda self, v: setattr(self, "_ambient", _vec(v, "ambient")))
+    background = Linked(_vec)
+    foreground = Linked(_vec)
+    ambient = Linked(_vec)
 
     # -- view ----------------------------------------------------------------------------
 
-    center = property(lambda self: self._center,
-                      lambda self, v: setattr(self, "_center", _vec(v, "center")))
-    up = property(lambda self: self._up, lambda self, v: setattr(self, "_up", _vec(v, "up")))
-
-    @property
-    def forward(self) -> vector:
-        return self._forward
-
-    @forward.setter
-    def forward(self, value) -> None:
-        value = _vec(value, "forward")
-        if value.mag2 == 0:
-            raise ValueError("forward cannot be the zero vector")
-        self._forward = value
+    center = Linked(_vec)
+    up = Linked(_vec)
+    forward = Linked(_direction)
 
     @property
     def autoscale(self) -> bool:
@@ -495,25 +489,9 @@ class _Light:
     def _read(self, args: dict) -> None:
         raise NotImplementedError
 
-    color = property(lambda self: self._color,
-                     lambda self, v: setattr(self, "_color", _vec(v, "color")))
-
-    @property
-    def canvas(self) -> canvas:
-        return self._canvas
-
-    @canvas.setter
-    def canvas(self, value) -> None:
-        raise AttributeError("canvas cannot be modified")
-
-    @property
-    def visible(self) -> bool:
-        return self._visible
-
-    @visible.setter
-    def visible(self, value) -> None:
-        self._visible = bool(value)
-        self._dirty = True
+    color = Linked(_vec)
+    canvas = Linked(readonly="canvas cannot be modified")
+    visible = Linked(bool, dirty=True)
 
     def delete(self) -> None:
         if self in self._canvas.lights:
@@ -529,8 +507,7 @@ class distant_light(_Light):
     def _read(self, args: dict) -> None:
         self._direction = _vec(args.pop("direction", vector(0, 0, 1)), "direction")
 
-    direction = property(lambda self: self._direction,
-                         lambda self, v: setattr(self, "_direction", _vec(v, "direction")))
+    direction = Linked(_vec)
 
 
 class local_light(_Light):
@@ -539,5 +516,4 @@ class local_light(_Light):
     def _read(self, args: dict) -> None:
         self._pos = _vec(args.pop("pos", vector(0, 0, 0)), "pos")
 
-    pos = property(lambda self: self._pos,
-                   lambda self, v: setattr(self, "_pos", _vec(v, "pos")))
+    pos = Linked(_vec)

@@ -18,6 +18,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from .attributes import Linked
 from .checks import _vec
 from ..geometry.object_meshes import object_mesh
 from .objects import standard
@@ -103,14 +104,7 @@ class fused(standard):
         self._tinted = True
         self._dirty = True
 
-    @property
-    def color(self) -> vector:
-        return standard.color.fget(self)
-
-    @color.setter
-    def color(self, value) -> None:
-        standard.color.fset(self, value)
-        self._tinted = True
+    color = Linked(_vec, then="_retint", live=True)
 
     def _tint(self) -> np.ndarray:
         return np.array(self._color._xyz()) if self._tinted else np.ones(3)
@@ -135,13 +129,8 @@ class fused(standard):
             setattr(new, name, value)
         return new
 
-    @property
-    def origin(self) -> vector:
-        return self._origin
-
-    @origin.setter
-    def origin(self, value) -> None:
-        raise AttributeError('The compound "origin" attribute is read-only; change "pos" instead.')
+    origin = Linked(readonly='The compound "origin" attribute is read-only; '
+                             'change "pos" instead.')
 
     def world_to_compound(self, v) -> vector:
         """A world point in the surface's own coordinates (VPython's, scaled by size0/size)."""

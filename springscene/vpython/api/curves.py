@@ -13,8 +13,9 @@ from __future__ import annotations
 
 import numpy as np
 
+from .attributes import Linked
 from .base import _Base
-from .checks import _vec
+from .checks import _vec, one_of
 from .vectors import is_lenient, vector
 
 
@@ -99,30 +100,13 @@ class _PointList(_Base):
 
     # -- attributes ----------------------------------------------------------------------
 
-    color = property(lambda self: self._color, lambda self, v: self._set("_color", _vec(v, "color")))
-    radius = property(lambda self: self._radius, lambda self, v: self._set("_radius", float(v)))
-    retain = property(lambda self: self._retain, lambda self, v: self._set("_retain", int(v)))
-    shininess = property(lambda self: self._shininess,
-                         lambda self, v: self._set("_shininess", float(v)))
-    emissive = property(lambda self: self._emissive,
-                        lambda self, v: self._set("_emissive", bool(v)))
+    color = Linked(_vec, then="_touch", hook=True)
+    radius = Linked(float, then="_touch")
+    retain = Linked(int, then="_touch")
+    shininess = Linked(float, then="_touch")
+    emissive = Linked(bool, then="_touch")
     pickable = property(lambda self: True, lambda self, v: None)
-
-    @property
-    def size_units(self) -> str:
-        return self._size_units
-
-    @size_units.setter
-    def size_units(self, value) -> None:
-        if value not in ("pixels", "world"):
-            raise ValueError("size_units must be 'pixels' or 'world'")
-        self._set("_size_units", value)
-
-    def _set(self, attr: str, value) -> None:
-        object.__setattr__(self, attr, value)
-        if isinstance(value, vector):
-            value._on_change = self._touch
-        self._touch()
+    size_units = Linked(one_of("pixels", "world"), then="_touch")
 
     def _touch(self) -> None:
         self._cache = None
@@ -286,11 +270,10 @@ class curve(_PointList):
         for v in (self._axis, self._up, self._size):
             v._on_change = self._touch
 
-    origin = property(lambda self: self._origin,
-                      lambda self, v: self._set("_origin", _vec(v, "origin")))
-    axis = property(lambda self: self._axis, lambda self, v: self._set("_axis", _vec(v, "axis")))
-    up = property(lambda self: self._up, lambda self, v: self._set("_up", _vec(v, "up")))
-    size = property(lambda self: self._size, lambda self, v: self._set("_size", _vec(v, "size")))
+    origin = Linked(_vec, then="_touch", hook=True)
+    axis = Linked(_vec, then="_touch", hook=True)
+    up = Linked(_vec, then="_touch", hook=True)
+    size = Linked(_vec, then="_touch", hook=True)
 
     def rotate(self, angle=None, axis=None, origin=None) -> None:
         """Turn the curve by ``angle`` about ``axis`` (default its own) through ``origin``

@@ -20,6 +20,7 @@ from typing import Any, Iterable, Iterator
 
 import numpy as np
 
+from .attributes import Linked
 from .checks import _vec
 from .vectors import vector
 
@@ -59,22 +60,14 @@ class frame:
 
     # -- where it is ---------------------------------------------------------------------
 
-    pos = property(lambda self: self._pos, lambda self, v: self._set("_pos", _vec(v, "pos")))
-    axis = property(lambda self: self._axis,
-                    lambda self, v: self._set("_axis", _vec(v, "axis")))
-    up = property(lambda self: self._up, lambda self, v: self._set("_up", _vec(v, "up")))
+    pos = Linked(_vec, then="_touch", hook=True)
+    axis = Linked(_vec, then="_touch", hook=True)
+    up = Linked(_vec, then="_touch", hook=True)
     x = property(lambda self: self._pos.x, lambda self, v: setattr(self._pos, "x", v))
     y = property(lambda self: self._pos.y, lambda self, v: setattr(self._pos, "y", v))
     z = property(lambda self: self._pos.z, lambda self, v: setattr(self._pos, "z", v))
 
-    @property
-    def visible(self) -> bool:
-        return self._visible
-
-    @visible.setter
-    def visible(self, value) -> None:
-        self._visible = bool(value)
-        self._touch()
+    visible = Linked(bool, then="_touch")
 
     @property
     def frame(self):
@@ -98,11 +91,6 @@ class frame:
     def objects(self) -> list:
         """The visible objects directly in this frame."""
         return [c for c in self._children if getattr(c, "_visible", True)]
-
-    def _set(self, attr: str, value: vector) -> None:
-        setattr(self, attr, value)
-        value._on_change = self._touch
-        self._touch()
 
     def _touch(self) -> None:
         """Everything inside is drawn anew."""

@@ -36,6 +36,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
+from .attributes import Linked
 from .page_order import claim_slot
 
 __all__ = [
@@ -69,6 +70,12 @@ def _rgb(value: Any, name: str) -> tuple[float, float, float]:
         return tuple(min(max(float(v), 0.0), 1.0) for v in c)   # type: ignore[return-value]
     except (TypeError, ValueError):
         raise AttributeError(f"{name} must be a vector") from None
+
+
+def _colour(value: Any, name: str) -> Any:
+    """``value`` as given, once :func:`_rgb` finds it a colour."""
+    _rgb(value, name)
+    return value
 
 
 def _is_seq(v: Any) -> bool:
@@ -284,24 +291,9 @@ class _gobj:
         return False
 
     # ---- attributes with rules
-    @property
-    def graph(self) -> graph:
-        """The graph this object belongs to (fixed when it is made)."""
-        return self._graph
-
-    @graph.setter
-    def graph(self, value: Any) -> None:
-        raise AttributeError("graph cannot be modified")
-
-    @property
-    def color(self) -> Any:
-        """The colour, a vector (black by default)."""
-        return self._color
-
-    @color.setter
-    def color(self, value: Any) -> None:
-        _rgb(value, "color")
-        self._color = value
+    graph = Linked(readonly="graph cannot be modified",
+                   doc="The graph this object belongs to (fixed when it is made).")
+    color = Linked(_colour, doc="The colour, a vector (black by default).")
 
     @property
     def size(self) -> float:
@@ -312,24 +304,12 @@ class _gobj:
     def size(self, value: float) -> None:
         self.radius = float(value) / 2
 
-    @property
-    def interval(self) -> int:
-        """Keep one ``plot`` call in ``interval`` (-1: all, 0: none)."""
-        return self._interval
-
-    @interval.setter
-    def interval(self, value: int) -> None:
-        self._interval = int(value)
+    def _count_afresh(self) -> None:
         self._iterations = 0
 
-    @property
-    def visible(self) -> bool:
-        """Whether the graph shows this object."""
-        return self._visible
-
-    @visible.setter
-    def visible(self, value: bool) -> None:
-        self._visible = bool(value)
+    interval = Linked(int, then="_count_afresh",
+                      doc="Keep one ``plot`` call in ``interval`` (-1: all, 0: none).")
+    visible = Linked(bool, doc="Whether the graph shows this object.")
 
     @property
     def data(self) -> list[list[float]]:

@@ -7,6 +7,7 @@ GlowScript's 2D overlay does (:meth:`..draw.renderer.Renderer._sync_labels`).
 
 from __future__ import annotations
 
+from .attributes import Linked
 from .base import _Base
 from .checks import _vec
 from .vectors import vector
@@ -48,35 +49,24 @@ class label(_Base):
             setattr(self, name, value)
         self._constructing = False
 
-    pos = property(lambda self: self._pos, lambda self, v: self._set("_pos", _vec(v, "pos")))
-    color = property(lambda self: self._color if self._color is not None
-                     else self._canvas.foreground,
-                     lambda self, v: self._set("_color", _vec(v, "color")))
-    background = property(lambda self: self._background if self._background is not None
-                          else self._canvas.background,
-                          lambda self, v: self._set("_background", _vec(v, "background")))
-    linecolor = property(lambda self: self._linecolor if self._linecolor is not None
-                         else self.color,
-                         lambda self, v: self._set("_linecolor", _vec(v, "linecolor")))
-    text = property(lambda self: self._text, lambda self, v: self._set("_text", str(v)))
-    xoffset = property(lambda self: self._xoffset,
-                       lambda self, v: self._set("_xoffset", float(v)))
-    yoffset = property(lambda self: self._yoffset,
-                       lambda self, v: self._set("_yoffset", float(v)))
-    height = property(lambda self: self._height, lambda self, v: self._set("_height", float(v)))
-    opacity = property(lambda self: self._opacity,
-                       lambda self, v: self._set("_opacity", float(v)))
-    box = property(lambda self: self._box, lambda self, v: self._set("_box", bool(v)))
-    border = property(lambda self: self._border, lambda self, v: self._set("_border", float(v)))
-    line = property(lambda self: self._line, lambda self, v: self._set("_line", bool(v)))
-    align = property(lambda self: self._align, lambda self, v: self._set("_align", str(v)))
-    pixel_pos = property(lambda self: self._pixel_pos,
-                         lambda self, v: self._set("_pixel_pos", bool(v)))
-    font = property(lambda self: self._font, lambda self, v: self._set("_font", str(v)))
-    space = property(lambda self: self._space, lambda self, v: self._set("_space", float(v)))
-    linewidth = property(lambda self: self._linewidth,
-                         lambda self, v: self._set("_linewidth", float(v)))
-
-    def _set(self, attr: str, value) -> None:
-        object.__setattr__(self, attr, value)
-        self._dirty = True
+    pos = Linked(_vec, dirty=True)
+    # the colours unset (None) are the canvas's
+    color = Linked(_vec, dirty=True, get=lambda self: (
+        self._color if self._color is not None else self._canvas.foreground))
+    background = Linked(_vec, dirty=True, get=lambda self: (
+        self._background if self._background is not None else self._canvas.background))
+    linecolor = Linked(_vec, dirty=True, get=lambda self: (
+        self._linecolor if self._linecolor is not None else self.color))
+    text = Linked(str, dirty=True)
+    xoffset = Linked(float, dirty=True)
+    yoffset = Linked(float, dirty=True)
+    height = Linked(float, dirty=True)
+    opacity = Linked(float, dirty=True)
+    box = Linked(bool, dirty=True)
+    border = Linked(float, dirty=True)
+    line = Linked(bool, dirty=True)
+    align = Linked(str, dirty=True)
+    pixel_pos = Linked(bool, dirty=True)
+    font = Linked(str, dirty=True)
+    space = Linked(float, dirty=True)
+    linewidth = Linked(float, dirty=True)

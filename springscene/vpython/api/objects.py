@@ -18,8 +18,9 @@ from __future__ import annotations
 import math
 
 from . import runtime
+from .attributes import Linked
 from .base import _Base
-from .checks import _vec
+from .checks import _vec, one_of
 from .curves import curve, points
 from .shared_defaults import Default, compact, default, seed_keys, stored
 from .vectors import is_lenient, vector
@@ -176,20 +177,8 @@ class standard(_Base):
 
     # -- position, trail ------------------------------------------------------------------
 
-    @property
-    def pos(self) -> vector:
-        v = self._pos
-        if v._on_change is None:         # hooked on a program's first read (``_live``)
-            if type(v) is Default:
-                v = self._own("_pos")
-            v._on_change = self._on_pos_change
-        return v
-
-    @pos.setter
-    def pos(self, value) -> None:
-        v = self._pos = _vec(value, "pos")
-        v._on_change = self._on_pos_change   # hooked now: a moving object's pos is read again
-        self._on_pos_change()
+    # hooked when set, not on the next read: a moving object's pos is read again
+    pos = Linked(_vec, then="_on_pos_change", hook=True, live=True)
 
     def _on_pos_change(self) -> None:
         self._dirty = True
@@ -210,10 +199,8 @@ class standard(_Base):
         self.__dict__["_pps_last"] = now
         return True
 
-    @property
-    def trail_object(self):
-        """VPython 6's name for the object's trail (a curve, or points)."""
-        return self._trail
+    trail_object = Linked(readonly=True, store="_trail",
+                          doc="VPython 6's name for the object's trail (a curve, or points).")
 
     def _add_trail_point(self) -> None:
         if self._trail is None:
@@ -254,51 +241,23 @@ class standard(_Base):
             self._add_trail_point()
         self._make_trail = value
 
-    @property
-    def trail_type(self) -> str:
-        return self._trail_type
-
-    @trail_type.setter
-    def trail_type(self, value) -> None:
-        if value not in ("curve", "points"):
-            raise ValueError("trail_type must be 'curve' or 'points'")
-        self._trail_type = value
-
-    @property
-    def trail_color(self) -> vector:
-        return self._trail_color if self._trail_color is not None else self.color
-
-    @trail_color.setter
-    def trail_color(self, value) -> None:
-        self._trail_color = _vec(value, "trail_color")
+    def _recolour_trail(self) -> None:
         if self._trail is not None:
             self._trail.color = self._trail_color
 
-    @property
-    def trail_radius(self) -> float:
-        return self._trail_radius if self._trail_radius is not None else 0.1 * self._size.y
+    trail_type = Linked(one_of("curve", "points"))
+    trail_color = Linked(_vec, then="_recolour_trail", get=lambda self: (
+        self._trail_color if self._trail_color is not None else self.color))
+    trail_radius = Linked(float, get=lambda self: (
+        self._trail_radius if self._trail_radius is not None else 0.1 * self._size.y))
+    interval = Linked(int)
+    retain = Linked(int)
+    pps = Linked()
+    pickable = Linked(bool)
 
-    @trail_radius.setter
-    def trail_radius(self, value) -> None:
-        self._trail_radius = float(value)
+    # -- axis, up, size: read as every vector is, each write linked to the others --------
 
-    interval = property(lambda self: self._interval,
-                        lambda self, v: setattr(self, "_interval", int(v)))
-    retain = property(lambda self: self._retain,
-                      lambda self, v: setattr(self, "_retain", int(v)))
-    pps = property(lambda self: self._pps, lambda self, v: setattr(self, "_pps", v))
-    pickable = property(lambda self: self._pickable,
-                        lambda self, v: setattr(self, "_pickable", bool(v)))
-
-    # -- axis, up, size -------------------------------------------------------------------
-
-    @property
-    def axis(self) -> vector:
-        v = self._axis
-        return v if v._on_change is not None else self._live("_axis")
-
-    @axis.setter
-    def axis(self, value) -> None:
+    def _set_axis(self, value) -> None:
         value = _vec(value, "axis")
         old = self._axis
         self._axis = value
@@ -309,6 +268,8 @@ class standard(_Base):
         if self._adjustupaxis:
             self._adjust_up(old, value)
         self._dirty = True
+
+    axis = Linked(live=True, set=_set_axis)
 
     def _on_axis_change(self) -> None:
         if self._axis_sets_size:
@@ -327,19 +288,15 @@ class standard(_Base):
         if up is not None:
             self._up = up
 
-    @property
-    def up(self) -> vector:
-        v = self._up
-        return v if v._on_change is not None else self._live("_up")
-
-    @up.setter
-    def up(self, value) -> None:
+    def _set_up(self, value) -> None:
         value = _vec(value, "up")
         old = self._up
         self._up = value
         if self._adjustupaxis:
             self._adjust_axis(old, value)
         self._dirty = True
+
+    up = Linked(live=True, set=_set_up)
 
     def _adjust_axis(self, old: vector, new: vector) -> None:
         """VPython's ``adjust_axis``: turn ``axis`` with ``up`` unless they are already square."""
@@ -349,17 +306,13 @@ class standard(_Base):
         if axis is not None:
             self._axis = axis
 
-    @property
-    def size(self) -> vector:
-        v = self._size
-        return v if v._on_change is not None else self._live("_size")
-
-    @size.setter
-    def size(self, value) -> None:
+    def _set_size(self, value) -> None:
         self._size = _vec(value, "size")
         if self._axis_sets_size:
             self._fit_axis()
         self._dirty = True
+
+    size = Linked(live=True, set=_set_size)
 
     def _on_size_change(self) -> None:
         if self._axis_sets_size:
@@ -403,15 +356,7 @@ class standard(_Base):
 
     # -- appearance ----------------------------------------------------------------------
 
-    @property
-    def color(self) -> vector:
-        v = self._color
-        return v if v._on_change is not None else self._live("_color")
-
-    @color.setter
-    def color(self, value) -> None:
-        self._color = _vec(value, "color")
-        self._dirty = True
+    color = Linked(_vec, dirty=True, live=True)
 
     red = property(lambda self: self._color.x,
                    lambda self, v: setattr(self, "color", vector(v, self._color.y, self._color.z)))
@@ -419,17 +364,6 @@ class standard(_Base):
                      lambda self, v: setattr(self, "color", vector(self._color.x, v, self._color.z)))
     blue = property(lambda self: self._color.z,
                     lambda self, v: setattr(self, "color", vector(self._color.x, self._color.y, v)))
-
-    def _scalar(name: str, kind=float):   # noqa: N805 -- a property factory used in the class body
-        attr = "_" + name
-
-        def get(self):
-            return getattr(self, attr)
-
-        def set_(self, value):
-            object.__setattr__(self, attr, kind(value))
-            self._dirty = True
-        return property(get, set_)
 
     x, y, z = _PosShortcut("x"), _PosShortcut("y"), _PosShortcut("z")
     texture = bumpmap = None          # none until given (:mod:`.texturing` reads them)
@@ -448,9 +382,10 @@ class standard(_Base):
         if getattr(value, "emissive", False):
             self._emissive = True
         self._dirty = True
-    opacity = _scalar("opacity")
-    shininess = _scalar("shininess")
-    emissive = _scalar("emissive", bool)
+
+    opacity = Linked(float, dirty=True)
+    shininess = Linked(float, dirty=True)
+    emissive = Linked(bool, dirty=True)
 
     # -- motion --------------------------------------------------------------------------
 

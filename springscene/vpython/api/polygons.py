@@ -27,9 +27,17 @@ from __future__ import annotations
 
 import numpy as np
 
+from .attributes import Linked
 from .base import _Base, _current_canvas
 from .checks import _vec
 from .vectors import vector
+
+
+def _texpos(value, name: str) -> vector:
+    v = _vec(value, name)
+    if v.z != 0:
+        raise AttributeError("the z component of texpos must currently be zero")
+    return v
 
 
 class vertex:
@@ -62,46 +70,16 @@ class vertex:
         for user in self._users:
             user._dirty = True
 
-    def _vector(name: str, check=None):   # noqa: N805 -- a property factory used in the class body
-        attr = "_" + name
-
-        def get(self):
-            return getattr(self, attr)
-
-        def set_(self, value):
-            v = _vec(value, name)
-            if check is not None:
-                check(v)
-            v._on_change = self._changed
-            object.__setattr__(self, attr, v)
-            self._changed()
-        return property(get, set_)
-
-    def _scalar(name: str, kind=float):   # noqa: N805 -- a property factory used in the class body
-        attr = "_" + name
-
-        def get(self):
-            return getattr(self, attr)
-
-        def set_(self, value):
-            object.__setattr__(self, attr, kind(value))
-            self._changed()
-        return property(get, set_)
-
-    def _flat(v: vector) -> None:        # noqa: N805 -- a check used in the class body
-        if v.z != 0:
-            raise AttributeError("the z component of texpos must currently be zero")
-
-    pos = _vector("pos")
-    normal = _vector("normal")
-    color = _vector("color")
-    texpos = _vector("texpos", _flat)
-    bumpaxis = _vector("bumpaxis")
-    opacity = _scalar("opacity")
-    shininess = _scalar("shininess")
-    emissive = _scalar("emissive", bool)
-    visible = _scalar("visible", bool)
-    pickable = _scalar("pickable", bool)
+    pos = Linked(_vec, then="_changed", hook=True)
+    normal = Linked(_vec, then="_changed", hook=True)
+    color = Linked(_vec, then="_changed", hook=True)
+    texpos = Linked(_texpos, then="_changed", hook=True)
+    bumpaxis = Linked(_vec, then="_changed", hook=True)
+    opacity = Linked(float, then="_changed")
+    shininess = Linked(float, then="_changed")
+    emissive = Linked(bool, then="_changed")
+    visible = Linked(bool, then="_changed")
+    pickable = Linked(bool, then="_changed")
     red = property(lambda self: self._color.x,
                    lambda self, v: setattr(self, "color", vector(v, self._color.y, self._color.z)))
     green = property(lambda self: self._color.y,
@@ -109,9 +87,7 @@ class vertex:
     blue = property(lambda self: self._color.z,
                     lambda self, v: setattr(self, "color", vector(self._color.x, self._color.y, v)))
 
-    @property
-    def canvas(self):
-        return self._canvas
+    canvas = Linked(readonly=True)
 
     @property
     def triangleCount(self) -> int:     # noqa: N802 -- VPython's name
@@ -193,20 +169,9 @@ class triangle(_Base):
         for i, v in enumerate(value):
             self._replace(i, _check_vertex(v, type(self).__name__, self._names[i]))
 
-    def _look(name: str):   # noqa: N805 -- a property factory used in the class body
-        attr = "_" + name
-
-        def get(self):
-            return getattr(self, attr)
-
-        def set_(self, value):
-            object.__setattr__(self, attr, value)
-            self._dirty = True
-        return property(get, set_)
-
-    texture = _look("texture")
-    bumpmap = _look("bumpmap")
-    pickable = _look("pickable")
+    texture = Linked(dirty=True)
+    bumpmap = Linked(dirty=True)
+    pickable = Linked(dirty=True)
 
     def _missing(name: str):   # noqa: N805 -- a property factory used in the class body
         def fail(self, *value):

@@ -8,6 +8,7 @@ with are in :mod:`..geometry.meshes`.
 
 from __future__ import annotations
 
+from .attributes import Linked
 from .objects import standard
 from .vectors import vector
 
@@ -77,10 +78,10 @@ class arrow(standard):
     _shaftwidth = _headwidth = _headlength = 0.0
     _round = False
 
-    shaftwidth = standard._scalar("shaftwidth")
-    headwidth = standard._scalar("headwidth")
-    headlength = standard._scalar("headlength")
-    round = standard._scalar("round", bool)
+    shaftwidth = Linked(float, dirty=True)
+    headwidth = Linked(float, dirty=True)
+    headlength = Linked(float, dirty=True)
+    round = Linked(bool, dirty=True)
 
     def _clone_args(self) -> dict:
         return {**super()._clone_args(), "shaftwidth": self._shaftwidth,
@@ -97,17 +98,10 @@ class helix(_Round):
     _thickness = None
     _ccw = True
 
-    coils = standard._scalar("coils")
-    ccw = standard._scalar("ccw", bool)
-
-    @property
-    def thickness(self) -> float:
-        return self._thickness if self._thickness is not None else self.radius / 10
-
-    @thickness.setter
-    def thickness(self, value) -> None:
-        self._thickness = float(value)
-        self._dirty = True
+    coils = Linked(float, dirty=True)
+    ccw = Linked(bool, dirty=True)
+    thickness = Linked(float, dirty=True, get=lambda self: (
+        self._thickness if self._thickness is not None else self.radius / 10))
 
     def _clone_args(self) -> dict:
         return {**super()._clone_args(), "coils": self._coils, "thickness": self.thickness,

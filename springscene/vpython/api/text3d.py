@@ -30,6 +30,7 @@ from functools import lru_cache
 
 import numpy as np
 
+from .attributes import Linked
 from .compounds import Surface, fused
 from .extrusions import SMOOTH, Caps, Sweep, clean_contour, sweep
 from .vectors import vector
@@ -312,7 +313,7 @@ class text(fused):
     text = property(lambda self: self._spec_args["text"])
     font = property(lambda self: self._spec_args["font"])
     align = property(lambda self: self._spec_args["align"])
-    billboard = property(lambda self: self._billboard)
+    billboard = Linked(readonly=True)
     start_face_color = property(lambda self: vector(self._spec_args["face_colors"][0]))
     end_face_color = property(lambda self: vector(self._spec_args["face_colors"][1]))
     show_start_face = property(lambda self: self._spec_args["faces"][0])

@@ -43,6 +43,8 @@ from math import acos, cos, pi, sin, sqrt
 from operator import index as _index
 from random import random as _random
 
+from .attributes import Linked
+
 __all__ = ['comp', 'cross', 'diff_angle', 'dot', 'hat', 'mag', 'mag2', 'norm', 'proj',
            'rotate', 'vec', 'vector']
 
@@ -151,35 +153,9 @@ class vector:
 
     # -- components -------------------------------------------------------
 
-    @property
-    def x(self) -> float:
-        return self._x
-
-    @x.setter
-    def x(self, value) -> None:
-        self._x = float(value)
-        if self._on_change is not None:
-            self._on_change()
-
-    @property
-    def y(self) -> float:
-        return self._y
-
-    @y.setter
-    def y(self, value) -> None:
-        self._y = float(value)
-        if self._on_change is not None:
-            self._on_change()
-
-    @property
-    def z(self) -> float:
-        return self._z
-
-    @z.setter
-    def z(self, value) -> None:
-        self._z = float(value)
-        if self._on_change is not None:
-            self._on_change()
+    x = Linked(float, notify=True)
+    y = Linked(float, notify=True)
+    z = Linked(float, notify=True)
 
     def _x_set(self, value: float) -> None:
         """Set ``x`` without calling ``_on_change``."""

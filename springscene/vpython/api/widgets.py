@@ -27,6 +27,8 @@ import builtins
 import sys
 from typing import Any, Callable
 
+from .attributes import Linked
+
 __all__ = [
     "button", "checkbox", "radio", "menu", "slider", "winput", "wtext",
     "skipped", "notes", "reset", "widgets_in_order", "set_placement_hook", "placeholder",
@@ -107,23 +109,9 @@ class _Control(_Widget):
         self._register(pos)
         _notes.append(self)
 
-    @property
-    def bind(self) -> Callable:
-        """The function a user's action would call (never, here)."""
-        return self._bind
-
-    @bind.setter
-    def bind(self, value: Any) -> None:
-        raise AttributeError("bind cannot be changed")
-
-    @property
-    def disabled(self) -> bool:
-        """Whether the control is greyed out."""
-        return self._disabled
-
-    @disabled.setter
-    def disabled(self, value: bool) -> None:
-        self._disabled = value
+    bind = Linked(readonly="bind cannot be changed",
+                  doc="The function a user's action would call (never, here).")
+    disabled = Linked(doc="Whether the control is greyed out.")
 
     def note(self) -> str:
         """What happened to it with nobody there."""
@@ -145,14 +133,10 @@ class button(_Control):
             args["color"] = args.pop("textcolor")
         self._setup(args)
 
-    text = property(lambda self: self._text, lambda self, v: setattr(self, "_text", v),
-                    doc="The button's text (HTML).")
-    color = property(lambda self: self._color, lambda self, v: setattr(self, "_color", v),
-                     doc="Text colour.")
+    text = Linked(doc="The button's text (HTML).")
+    color = Linked(doc="Text colour.")
     textcolor = color
-    background = property(lambda self: self._background,
-                          lambda self, v: setattr(self, "_background", v),
-                          doc="Button colour.")
+    background = Linked(doc="Button colour.")
 
     def note(self) -> str:
         return f"button {_short(self._text)} (bind={_fn_name(self._bind)}): never clicked"
@@ -170,11 +154,8 @@ class checkbox(_Control):
         self._disabled = False
         self._setup(args)
 
-    text = property(lambda self: self._text, lambda self, v: setattr(self, "_text", v),
-                    doc="The text beside the box (HTML).")
-    checked = property(lambda self: self._checked,
-                       lambda self, v: setattr(self, "_checked", v),
-                       doc="Whether it is ticked.")
+    text = Linked(doc="The text beside the box (HTML).")
+    checked = Linked(doc="Whether it is ticked.")
 
     def note(self) -> str:
         state = "checked" if self._checked else "unchecked"
@@ -199,8 +180,7 @@ class radio(_Control):
         if self._name:
             _radio_groups.setdefault(self._name, []).append(self)
 
-    text = property(lambda self: self._text, lambda self, v: setattr(self, "_text", v),
-                    doc="The text beside the button (HTML).")
+    text = Linked(doc="The text beside the button (HTML).")
 
     @property
     def checked(self) -> bool:
@@ -215,14 +195,8 @@ class radio(_Control):
             r._checked = False
         self._checked = value
 
-    @property
-    def name(self) -> str:
-        """The group's name ('' for none); fixed."""
-        return self._name
-
-    @name.setter
-    def name(self, value: Any) -> None:
-        raise AttributeError("Cannot change the name attribute of a radio widget.")
+    name = Linked(readonly="Cannot change the name attribute of a radio widget.",
+                  doc="The group's name ('' for none); fixed.")
 
     def note(self) -> str:
         state = "checked" if self._checked else "unchecked"
@@ -246,23 +220,8 @@ class menu(_Control):
             args["selected"] = self._choices[args.pop("index")]
         self._setup(args)
 
-    @property
-    def choices(self) -> list:
-        """The menu's entries."""
-        return self._choices
-
-    @choices.setter
-    def choices(self, value: Any) -> None:
-        self._choices = list(value)
-
-    @property
-    def selected(self) -> Any:
-        """The chosen entry, or None."""
-        return self._selected
-
-    @selected.setter
-    def selected(self, value: Any) -> None:
-        self._selected = value
+    choices = Linked(list, doc="The menu's entries.")
+    selected = Linked(doc="The chosen entry, or None.")
 
     @property
     def index(self) -> int | None:
@@ -280,15 +239,10 @@ class menu(_Control):
                 f"selected stays {_short(self._selected)}")
 
 
-def _fixed(name: str) -> property:
+def _fixed() -> Linked:
     """A slider attribute VPython fixes once the slider is made."""
-    def get(self):
-        return getattr(self, "_" + name)
-
-    def set_(self, value):
-        raise AttributeError(f"{name} cannot be changed after creating a slider")
-
-    return property(get, set_, doc=f"The slider's {name} (fixed once made).")
+    return Linked(readonly="{name} cannot be changed after creating a slider",
+                  doc="The slider's {name} (fixed once made).")
 
 
 class slider(_Control):
@@ -313,20 +267,19 @@ class slider(_Control):
         self._disabled = False
         self._setup(args)
 
-    vertical = _fixed("vertical")
-    min = _fixed("min")
-    max = _fixed("max")
-    step = _fixed("step")
-    length = _fixed("length")
-    width = _fixed("width")
-    left = _fixed("left")
-    right = _fixed("right")
-    top = _fixed("top")
-    bottom = _fixed("bottom")
-    align = _fixed("align")
+    vertical = _fixed()
+    min = _fixed()
+    max = _fixed()
+    step = _fixed()
+    length = _fixed()
+    width = _fixed()
+    left = _fixed()
+    right = _fixed()
+    top = _fixed()
+    bottom = _fixed()
+    align = _fixed()
 
-    value = property(lambda self: self._value, lambda self, v: setattr(self, "_value", v),
-                     doc="The slider's value.")
+    value = Linked(doc="The slider's value.")
 
     def note(self) -> str:
         return (f"slider (bind={_fn_name(self._bind)}): never moved; "
@@ -352,40 +305,14 @@ class winput(_Control):
         if self._type not in ("numeric", "string"):
             raise AttributeError('A winput type must be "numeric" or "string".')
 
-    text = property(lambda self: self._text, lambda self, v: setattr(self, "_text", v),
-                    doc="The text in the box.")
-
-    @property
-    def number(self) -> Any:
-        """The typed text's value for type 'numeric' (None: nothing typed)."""
-        return self._number
-
-    @number.setter
-    def number(self, value: Any) -> None:
-        raise AttributeError("Cannot change the winput number attribute.")
-
-    @property
-    def width(self) -> int:
-        """Box width in pixels (fixed)."""
-        return self._width
-
-    @width.setter
-    def width(self, value: Any) -> None:
-        raise AttributeError("Cannot change the winput width attribute.")
-
-    @property
-    def height(self) -> int:
-        """Box height in pixels."""
-        return self._height
-
-    @property
-    def type(self) -> str:
-        """'numeric' or 'string' (fixed)."""
-        return self._type
-
-    @type.setter
-    def type(self, value: Any) -> None:
-        raise AttributeError("Cannot change the winput type attribute.")
+    text = Linked(doc="The text in the box.")
+    number = Linked(readonly="Cannot change the winput {name} attribute.",
+                    doc="The typed text's value for type 'numeric' (None: nothing typed).")
+    width = Linked(readonly="Cannot change the winput {name} attribute.",
+                   doc="Box width in pixels (fixed).")
+    height = Linked(readonly=True, doc="Box height in pixels.")
+    type = Linked(readonly="Cannot change the winput {name} attribute.",
+                  doc="'numeric' or 'string' (fixed).")
 
     def note(self) -> str:
         return (f"winput (bind={_fn_name(self._bind)}): nothing typed; "
@@ -412,14 +339,7 @@ class wtext(_Widget):
             setattr(self, a, v)
         self._register(pos)
 
-    @property
-    def text(self) -> str:
-        """The text (HTML); setting it changes what the page shows."""
-        return self._text
-
-    @text.setter
-    def text(self, value: Any) -> None:
-        self._text = str(value)
+    text = Linked(str, doc="The text (HTML); setting it changes what the page shows.")
 
 
 # --------------------------------------------------------------------------- module state
