@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import springscene
-from conftest import ROOT, WIKI, run_cli
+from conftest import ROOT, WIKI
 from springscene import api, config, jobs, results
 from springscene.app.cli import main
 from springscene.errors import UserError

@@ -7,7 +7,6 @@ program), ``<scene>.ids.png`` (its ids variant, :mod:`idscene`) and ``<scene>.id
 """
 from __future__ import annotations
 
-import inspect
 import json
 from pathlib import Path
 
@@ -48,14 +47,9 @@ def _read_png(path: Path) -> np.ndarray:
 
 
 def springscene_picture(program: Path, out: Path, supervised: bool = True) -> np.ndarray:
-    """springscene's still of ``program`` (the canvas alone where the runner can): run in a
-    supervised child, or with ``supervised=False`` in this process (the tests: no new
-    Python a picture)."""
-    options = {"page": False, "supervised": supervised}
-    if "canvas_only" in inspect.signature(jobs.vpython).parameters or \
-            "canvas_only" in inspect.signature(jobs.run_program).parameters:
-        options["canvas_only"] = True
-    jobs.vpython(program, out, **options)
+    """springscene's still of ``program``, the canvas alone: run in a supervised child, or
+    with ``supervised=False`` in this process (the tests: no new Python a picture)."""
+    jobs.vpython(program, out, page=False, canvas_only=True, supervised=supervised)
     return _read_png(out)
 
 

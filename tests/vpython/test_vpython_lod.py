@@ -378,6 +378,7 @@ def test_lod_option_of_the_library_is_checked_as_the_flag(tmp_path, value):
     assert not (tmp_path / "x.png").exists()
 
 
+@pytest.mark.slow                  # the supervised child is a new Python
 def test_a_level_of_detail_reaches_the_supervised_child(tmp_path):
     """RunOptions.lod as a LevelOfDetail (VPython's full detail) or as --lod's pixels goes
     through the supervised child's request and draws there."""
