@@ -133,7 +133,7 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
     (``coarse``: helices within that many pixels, ``springscene vpython --lod``)."""
     import random
 
-    from springscene.vpython.geometry import helices
+    from springscene.vpython.draw import culling
     from springscene.vpython.geometry import lod as levels
 
     src = program.read_text()
@@ -142,9 +142,9 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
                           f"scene.width = {size[0]}; scene.height = {size[1]}", 1)
     prog = tmp / program.name
     prog.write_text(src)
-    saved = helices.cull_back_faces
+    saved = culling.cull_back_faces
     if not lod:
-        helices.cull_back_faces = lambda *args: None
+        culling.cull_back_faces = lambda *args: None
     times: list[float] = []
     random.seed(1)
     try:
@@ -153,7 +153,7 @@ def demo_fps(program: Path, size, antialias: bool, lod: bool, tmp: Path,
                                canvas_only=True, lod=coarse if lod else levels.FULL),
                     on_frame=lambda i, image: times.append(time.perf_counter()))
     finally:
-        helices.cull_back_faces = saved
+        culling.cull_back_faces = saved
     steady = times[3:]
     return (len(steady) - 1) / (steady[-1] - steady[0])
 

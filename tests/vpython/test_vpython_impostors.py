@@ -52,7 +52,7 @@ def _picture(antialias: bool, full: bool = False, backend_name: str = "auto"):
     r.frame()
     image = r.frame()                         # at the detail for the camera it placed
     batches = {k: b for k, b in r._batches.items() if k[0] == "sphere"}
-    drawn = {k: (type(b), int(b.lod[1].sum())) for k, b in batches.items()}
+    drawn = {k: (type(b), int(b.drawn_detail[1].sum())) for k, b in batches.items()}
     r.close()
     return image, drawn
 
@@ -99,8 +99,8 @@ def test_big_spheres_keep_the_mesh_and_ellipsoids_too():
     r.frame()
     (key, batch), = [(k, b) for k, b in r._batches.items() if k[0] == "sphere"]
     assert isinstance(batch, SphereBatch)
-    assert batch.lod[1].tolist() == [False] + [True] * 5 + [False, False]
-    assert batch.instances == 3 and batch.lod[0] == 30           # the others' mesh
+    assert batch.drawn_detail[1].tolist() == [False] + [True] * 5 + [False, False]
+    assert batch.instances == 3 and batch.drawn_detail[0] == 30           # the others' mesh
     assert batch.impostors.mesh.n_points == len(small)
     assert np.allclose(batch.impostors.mesh["radius"], 0.1 * impostors.EQUAL_AREA)
     r.close()
@@ -115,10 +115,10 @@ def test_zooming_in_turns_impostors_into_meshes():
     r = Renderer(vp.scene, antialias=False)
     far = r.frame()
     (batch,) = [b for k, b in r._batches.items() if k[0] == "sphere"]
-    assert batch.lod[1].all() and batch.no_meshes
+    assert batch.drawn_detail[1].all() and batch.no_meshes
     vp.scene.range = 1
     near = r.frame()
-    assert not batch.lod[1].any() and batch.instances == len(balls)
+    assert not batch.drawn_detail[1].any() and batch.instances == len(balls)
     assert not batch.impostors.actor.GetVisibility()
     assert (near > 0).sum() > 50 * (far > 0).sum()
     r.close()
@@ -149,7 +149,7 @@ def test_a_negative_radius_keeps_its_mesh():
     r = Renderer(vp.scene, antialias=False)
     r.frame()
     (batch,) = [b for k, b in r._batches.items() if k[0] == "sphere"]
-    assert batch.lod[1].tolist() == [False, True]
+    assert batch.drawn_detail[1].tolist() == [False, True]
     r.close()
 
 
@@ -199,7 +199,7 @@ def test_impostors_on_each_backend(backend_name, tmp_path):
         r.frame()
         np.save(sys.argv[1], r.frame())
         (batch,) = r._batches.values()
-        print(int(batch.lod[1].sum()))
+        print(int(batch.drawn_detail[1].sum()))
     """)
     _cloud(300, 0.15)
     full, _ = _picture(True, full=True)          # this process's backend (auto: EGL)

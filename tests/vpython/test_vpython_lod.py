@@ -4,7 +4,7 @@ VPython's helix (primitives.js ``helix.__update``): ``coils * 60 + 1`` centre-li
 points, a 16-sided tube of radius thickness/2 (size.y/40 when 0). At full detail the
 batched mesh is exactly the single-helix tube (HelixTube's numbers); with a view, a
 small helix gets fewer chords and sides, the fewest whose polygons stay within
-``LOD_PX`` pixels of the true circles.
+the level of detail's pixels of the true circles (geometry.lod).
 """
 
 from __future__ import annotations
@@ -23,6 +23,7 @@ from springscene.errors import UserError
 from springscene.view import camera
 from springscene.view.geometry import HelixTube
 from springscene.vpython.geometry import helices, lod, object_meshes, placement
+from springscene.vpython.draw import culling
 from springscene.vpython.draw.renderer import Renderer
 from springscene.vpython.run.options import RunOptions
 from springscene.vpython.run.supervise import run_supervised
@@ -121,12 +122,12 @@ def test_lod_mesh_stays_near_the_full_one():
     h = vp.helix(pos=vp.vector(-0.2, 0, 0), axis=vp.vector(0.4, 0.1, 0), radius=0.15,
                  thickness=0.05)
     full = helices.mesh([h])
-    lod = helices.mesh([h], _view(15.0))
-    assert len(lod[0]) < len(full[0]) / 2
+    coarse = helices.mesh([h], _view(15.0))
+    assert len(coarse[0]) < len(full[0]) / 2
     centre = full[0].reshape(-1, 16, 3).mean(axis=1)
-    d = np.linalg.norm(lod[0][:, None] - centre[None], axis=2).min(axis=1)
+    d = np.linalg.norm(coarse[0][:, None] - centre[None], axis=2).min(axis=1)
     assert np.all(np.abs(d - 0.025) < 0.025 * 0.05 + 1e-3)
-    lo, hi = lod[4][0]
+    lo, hi = coarse[4][0]
     assert np.all(full[0].min(0) >= lo - 1e-9) and np.all(full[0].max(0) <= hi + 1e-9)
 
 
@@ -230,7 +231,7 @@ def test_back_faces_culled_only_when_hidden():
     assert sphere.actor.GetProperty().GetBackfaceCulling() == 0
     r.close()
     style = {"opacity": 0.5}
-    helices.cull_back_faces(sphere, style)           # actor gone: nothing to do
+    culling.cull_back_faces(sphere, style)           # actor gone: nothing to do
 
 
 def test_wire_sides_take_a_share_of_the_tolerance():

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import sys
 import time
+from pathlib import Path
 
 import pytest
 
@@ -13,7 +14,7 @@ from springscene.vpython.api import runtime
 from springscene.vpython.api.canvases import canvas
 from springscene.vpython.api.vectors import is_lenient
 from springscene.vpython.dialects.compiling import Dialect
-from springscene.vpython.run import session
+from springscene.vpython.run import runner, session
 from springscene.vpython.run.session import ProgramSession
 
 
@@ -23,13 +24,14 @@ def _state() -> tuple:
             hasattr(time, "clock"))
 
 
-def _session(tmp_path, kind="vpython6", name="VPython 6"):
+def _session(tmp_path, kind="vpython6", name="VPython 6", on_end=None):
     program = tmp_path / "prog.py"
     program.write_text("")
     timeline = runtime.Timeline(50, 10, lambda: None)
     return program, timeline, ProgramSession(program, Dialect(kind, name), timeline,
                                              capture=lambda cv, n: None,
-                                             measure=lambda cv: None, stdout=sys.stderr)
+                                             measure=lambda cv: None, stdout=sys.stderr,
+                                             on_end=on_end)
 
 
 def test_the_program_sees_its_own_process_and_everything_is_put_back(tmp_path):
@@ -47,12 +49,11 @@ def test_the_program_sees_its_own_process_and_everything_is_put_back(tmp_path):
     assert "helper_mod_xyz" not in sys.modules        # forgotten: a new run imports it afresh
 
 
-def test_put_back_after_an_error_and_the_hooks_see_it_first(tmp_path, monkeypatch):
+def test_put_back_after_an_error_and_on_end_sees_it_first(tmp_path):
     before = _state()
-    program, _, s = _session(tmp_path, "vpython7", "VPython 7")
     seen = []
-    monkeypatch.setattr(session, "program_end_hooks",
-                        [lambda error: seen.append((error, list(sys.argv)))])
+    program, _, s = _session(tmp_path, "vpython7", "VPython 7",
+                             on_end=lambda error: seen.append((error, list(sys.argv))))
     with pytest.raises(ZeroDivisionError):
         with s:
             assert not is_lenient()
@@ -62,10 +63,42 @@ def test_put_back_after_an_error_and_the_hooks_see_it_first(tmp_path, monkeypatc
     assert isinstance(error, ZeroDivisionError) and argv == [str(program)]   # before put back
 
 
-def test_a_hook_sees_none_when_the_program_ended(tmp_path, monkeypatch):
-    _, _, s = _session(tmp_path)
+def test_on_end_sees_none_when_the_program_ended(tmp_path):
     seen = []
-    monkeypatch.setattr(session, "program_end_hooks", [seen.append])
+    _, _, s = _session(tmp_path, on_end=seen.append)
     with s:
         pass
     assert seen == [None]
+
+
+def test_what_was_set_before_is_put_back_not_a_default(tmp_path):
+    """A session inside a session (a program run from a program's run) leaves the outer
+    one's clock, capture and leniency as they were."""
+    _, outer_clock, outer = _session(tmp_path)
+    with outer:
+        capture, lenient = runtime.capturer(), is_lenient()
+        (tmp_path / "inner").mkdir()
+        _, _, inner = _session(tmp_path / "inner", "vpython7", "VPython 7")
+        with inner:
+            assert not is_lenient()
+        assert runtime.current() is outer_clock and runtime.capturer() is capture
+        assert is_lenient() == lenient
+
+
+def test_only_the_programs_own_modules_are_forgotten(tmp_path):
+    """A program's folder may hold this Python's installation or springscene itself (a
+    notebook in the project's folder): those modules stay loaded."""
+    folder = Path(session.__file__).resolve().parents[4]          # the checkout
+    assert session._the_programs(folder / "helper.py", folder)
+    assert not session._the_programs(Path(session.__file__).resolve(), folder)
+    assert not session._the_programs(Path(sys.prefix).resolve() / "lib" / "x.py",
+                                     Path(sys.prefix).resolve().parent)
+
+
+def test_a_traceback_keeps_the_examples_frames_and_drops_springscenes():
+    """An example program shipped inside the package is the user's code; a folder whose
+    name only starts like the package's is not springscene."""
+    package = Path(runner.__file__).resolve().parents[2]
+    assert runner._ours(runner.__file__)
+    assert not runner._ours(str(package / "examples" / "wiki_spring.py"))
+    assert not runner._ours(str(package.parent / (package.name + "-notes") / "prog.py"))

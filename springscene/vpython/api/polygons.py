@@ -19,8 +19,8 @@ and GlowScript's ``lib/glow/primitives.js``:
 
 Colours are blended between vertices, a texture is multiplied by them
 (tri_render_vertex.shader: ``vcolor = color``; no place, flip or turn for
-triangles) and placed by each vertex's ``texpos``. :func:`arrays` gives the
-renderer (:mod:`..draw.renderer`) the triangles of many at once.
+triangles) and placed by each vertex's ``texpos``; their meshes are
+:func:`..geometry.object_meshes.polygon_arrays`.
 """
 
 from __future__ import annotations
@@ -203,48 +203,10 @@ class quad(triangle):
     v3 = triangle._vertex_property(3)
 
 
-# -- arrays for the renderer --------------------------------------------------------------
-
-_QUAD = np.array([[0, 1, 2], [0, 2, 3]])
-
-
-def arrays(objs) -> tuple[np.ndarray, ...]:
-    """Points, normals, triangles, RGBA (uint8), texture coordinates of triangles and quads.
-
-    Each object has its own copies of its vertices (3 or 4 points). A
-    triangle's winding is made to agree with its vertices' normals, so that a
-    renderer lighting back faces from behind (VTK's two-sided lighting) lights
-    it from the side its normals point to, as GlowScript does.
-    """
-    verts = [v for o in objs for v in o._verts]
-    counts = np.array([len(o._verts) for o in objs])
-    pos = np.array([v._pos._xyz() for v in verts], dtype=float)
-    normal = np.array([v._normal._xyz() for v in verts], dtype=float)
-    color = np.array([(*v._color._xyz(), v._opacity) for v in verts], dtype=float)
-    uv = np.array([v._texpos._xyz()[:2] for v in verts], dtype=float)
-    starts = np.concatenate([[0], np.cumsum(counts)[:-1]])
-    tris = [starts[counts == 3, None] + _QUAD[0]]
-    fours = starts[counts == 4]
-    if len(fours):
-        tris.append((fours[:, None, None] + _QUAD[None]).reshape(-1, 3))
-    triangles = np.concatenate(tris).astype(np.int64)
-    p = pos[triangles]
-    face = np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0])
-    backwards = np.einsum("ij,ij->i", face, normal[triangles].sum(axis=1)) < 0
-    triangles[backwards] = triangles[backwards][:, [0, 2, 1]]
-    rgba = np.clip(np.rint(color * 255), 0, 255).astype(np.uint8)
-    return pos, _unit(normal), triangles, rgba, uv
-
-
-def _unit(v: np.ndarray) -> np.ndarray:
-    n = np.linalg.norm(v, axis=1, keepdims=True)
-    return v / np.where(n == 0, 1.0, n)
-
-
 def look(obj) -> tuple[float, bool]:
     """(shininess, emissive) a triangle is drawn with: its vertices' mean and any."""
     return (float(np.mean([v._shininess for v in obj._verts])),
             any(v._emissive for v in obj._verts))
 
 
-__all__ = ["vertex", "triangle", "quad", "arrays", "look"]
+__all__ = ["vertex", "triangle", "quad", "look"]

@@ -181,6 +181,11 @@ def set_capture(fn: Callable | None) -> None:
     _capture = fn
 
 
+def capturer() -> Callable | None:
+    """Who saves ``scene.capture`` pictures now (:func:`set_capture`)."""
+    return _capture
+
+
 def capture(cv, name: str) -> None:
     if _capture is None:       # a program run by python itself: no renderer, no pictures
         warnings.warn(f"scene.capture({name!r}) saved nothing: pictures are taken only when "

@@ -37,6 +37,11 @@ class Batch:
     opacity = 1.0        # the look's opacity
     vertex_alpha = False  # some vertex's own opacity (RGBA colours) is below 1
     lit = False          # a surface lit by the lights (shaded by GlowScript's rules)
+    # what the renderer keeps to draw the batch again for another view
+    objs = None          # the objects drawn
+    detail_view = None   # the view their level of detail was chosen for
+    drawn_detail = None  # spheres: (slices of the meshed ones, which are impostors)
+    helix_arrays = None  # helices: their arrays (:func:`..geometry.helices.helix_arrays`)
 
     def __init__(self, window, key: tuple, texture=None) -> None:
         from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista

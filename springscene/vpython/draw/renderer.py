@@ -26,9 +26,9 @@ import numpy as np
 
 from ...view import backend, camera, window
 from ...view.scene import MULTI_SAMPLES, apply_view, grab
-from . import autoscale, label_overlay, materials
+from . import autoscale, culling, helix_batches, label_overlay, materials
 from ..api import frames, polygons, texturing
-from ..geometry import helices, meshes, object_meshes, placement, point_meshes, textured
+from ..geometry import meshes, object_meshes, placement, point_meshes, textured
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template
 from .batches import Batch, TextureCache, TexturedBatch
@@ -67,7 +67,7 @@ class Renderer:
         self.antialias, self.lod = antialias, lod
         # plain VTK (no pyvista.plotting, no matplotlib); no light until scene.lights
         win = window.Window((self.width, self.height), (1.0, 1.0, 1.0), MULTI_SAMPLES)
-        helices.no_frustum_culler(win.renderer)  # its bounds cost time, not pixels
+        culling.no_frustum_culler(win.renderer)  # its bounds cost time, not pixels
         self._transparency = materials.Transparency(win, MULTI_SAMPLES if antialias else 0)
         self.window = win
         self._ambient = None
@@ -214,9 +214,9 @@ class Renderer:
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
         elif kind == "helix":             # one vectorised mesh, detail by screen size
-            helices.draw(batch, objs, self.view, style,
-                         full=self.lod.full_helices(self.antialias), lod=self.lod)
-            batch.objs, batch.lod_view = objs, self._view_key()
+            helix_batches.draw(batch, objs, self.view, style,
+                               full=self.lod.full_helices(self.antialias), lod=self.lod)
+            batch.objs, batch.detail_view = objs, self._view_key()
         else:
             parts = [m for m in (kind_mesh(kind, o) for o in objs) if m is not None]
             self._draw_meshes(batch, key, parts, style)
@@ -229,7 +229,8 @@ class Renderer:
         slices = None
         if key[0] == "sphere":      # kept to redraw at another detail for another view
             slices, small = self._sphere_detail(pos, size)
-            batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+            batch.objs, batch.drawn_detail = objs, (slices, small)
+            batch.detail_view = self._view_key()
         template_ = template(key[0], slices)
         if isinstance(batch, InstancedBatch):
             batch.set_instances(template_, (key[0], slices), pos, R, size, rgb8(color), style)
@@ -242,19 +243,20 @@ class Renderer:
                 placement.vtk_cells(placement.tile(template_.triangles, n, len(objs)))
             batch.set(points, normals, colors, cells, signature, style)
         if key[0] == "sphere":
-            helices.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
+            culling.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
 
     def _draw_spheres(self, batch, key, objs, style) -> None:
         """Spheres, the small ones impostors: only the meshed ones' turns are found."""
         pos, size, color = np.split(placement.xyz_array(objs, "_pos", "_size", "_color"), 3,
                                     axis=1)
         slices, small = self._sphere_detail(pos, size, True)
-        batch.objs, batch.lod, batch.lod_view = objs, (slices, small), self._view_key()
+        batch.objs, batch.drawn_detail = objs, (slices, small)
+        batch.detail_view = self._view_key()
         meshed = [o for o, s in zip(objs, small.tolist()) if not s]
         axis, up = np.split(placement.xyz_array(meshed, "_axis", "_up"), 2, axis=1)
         batch.set_spheres(template(key[0], slices), (key[0], slices), pos,
                           placement.frames(axis, up), size, rgb8(color), style, small)
-        helices.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
+        culling.cull_back_faces(batch, style, self.view, pos, size.max(axis=1) / 2)
 
     def _draw_polygons(self, batch, key, objs, style) -> None:
         """Triangles and quads: each vertex's own position, normal, colour and opacity."""
@@ -323,7 +325,7 @@ class Renderer:
         now = self._view_key()
         for key, batch in self._batches.items():
             if key[0] in SCREEN_THINNED and getattr(batch, "view_key", now) != now \
-                    and getattr(batch, "objs", None):
+                    and batch.objs:
                 self._draw(batch, key, batch.objs)
 
     def _detail_for_this_view(self) -> None:
@@ -332,20 +334,21 @@ class Renderer:
         from the one they were drawn at."""
         now = self._view_key()
         for key, batch in self._batches.items():
-            drawn = getattr(batch, "lod", None)       # what the batch was drawn at
-            if drawn is None or batch.lod_view == now or batch.empty:
+            at_a_detail = batch.drawn_detail is not None or batch.helix_arrays is not None
+            if not at_a_detail or batch.detail_view == now or batch.empty:
                 continue
-            batch.lod_view = now
+            batch.detail_view = now
             if key[0] == "sphere":      # the objects unchanged: read again, not kept
                 pos, size = np.split(placement.xyz_array(batch.objs, "_pos", "_size"), 2,
                                      axis=1)
                 slices, small = self._sphere_detail(pos, size, isinstance(batch, SphereBatch))
-                redraw = slices != drawn[0] or not np.array_equal(small, drawn[1])
+                redraw = slices != batch.drawn_detail[0] or \
+                    not np.array_equal(small, batch.drawn_detail[1])
                 if not redraw:      # a camera now inside an opaque sphere sees its inside
-                    helices.cull_back_faces(batch, self._style(key), self.view, pos,
-                                                size.max(axis=1) / 2)
+                    culling.cull_back_faces(batch, self._style(key), self.view, pos,
+                                            size.max(axis=1) / 2)
             else:
-                redraw = helices.detail_changed(
+                redraw = helix_batches.detail_changed(
                     batch, self.view, self.lod.full_helices(self.antialias), self.lod)
             if redraw:
                 self._draw(batch, key, batch.objs)

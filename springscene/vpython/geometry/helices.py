@@ -180,7 +180,7 @@ def mesh(objs, view=None, triangles: bool = True, full: bool = False,
     if not len(a["length"]):
         return None
     parts, start = [], 0
-    for (coils, ccw), idx in _groups(a).items():
+    for (coils, ccw), idx in groups(a).items():
         chords, sides = detail(a, idx, view, full, lod)
         t = template(coils, ccw, chords, sides)
         points, normals = place(t, a["pos"][idx], a["R"][idx], a["length"][idx],
@@ -210,40 +210,7 @@ def _bounds(points, wire, m: int, sides: int, exact: bool) -> np.ndarray:
     return np.stack([centres.min(axis=1) - w, centres.max(axis=1) + w], axis=1)
 
 
-def draw(batch, objs, view, style, full: bool = False, lod: LevelOfDetail = DEFAULT) -> None:
-    """Put the helices ``objs`` into ``batch`` (triangles rebuilt only when the groups
-    or their detail change); the batch hidden when no helix has a length. Autoscale
-    bounds helices by VPython's rule (:mod:`..draw.autoscale`), so no bounds are made here."""
-    a = helix_arrays(objs)
-    m = mesh(objs, view, triangles=False, full=full, bounds=False, arrays=a, lod=lod)
-    if m is None:
-        batch.hide()
-        return
-    points, normals, _, rgb, _, signature = m
-    signature = ("helix",) + signature
-    cells = None
-    if signature != batch.signature:
-        cells = placement.vtk_cells(np.concatenate([
-            placement.tile(template(c, w, n, s).triangles, len(template(c, w, n, s).s), k)
-            + start for (c, w, n, s, k), start in zip(signature[1:], _starts(signature[1:]))]))
-    batch.set(points, normals, rgb, cells, signature, style)
-    # GlowScript culls nothing: a thick wire's open ends show its inside (the fidelity
-    # scene's hanging helix: IoU 0.973 culled, 0.981 not); a wire a few pixels thick
-    # hides its far side (AtomicSolid: 0.002 % of pixels differ), so that goes
-    cull_back_faces(batch, style if _thin(a, view) else {**style, "opacity": 0.0})
-    batch.lod = a        # :func:`detail_changed` asks again when the camera moves
-
-
-def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> bool:
-    """Whether ``batch``'s helices (drawn by :func:`draw`) need another level of detail
-    for ``view``: any group's chords or sides differ from those drawn."""
-    a = batch.lod
-    drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
-    return any(detail(a, idx, view, full, lod) != drawn.get(shape)
-               for shape, idx in _groups(a).items())
-
-
-def _groups(a: dict) -> dict[tuple, np.ndarray]:
+def groups(a: dict) -> dict[tuple, np.ndarray]:
     """The helices of :func:`helix_arrays` ``a`` by shape, (coils, ccw): their indices, in
     first-seen order (a batch's groups and its signature's)."""
     groups: dict[tuple, list[int]] = {}
@@ -252,53 +219,5 @@ def _groups(a: dict) -> dict[tuple, np.ndarray]:
     return {shape: np.array(idx) for shape, idx in groups.items()}
 
 
-THIN_WIRE_PX = 4.0     # px: a wire radius on screen below which its back faces are culled
-                       # (AtomicSolid at 900 x 600: 3.4 px, culled: 0.002 % of pixels differ)
-
-
-def _thin(a: dict, view) -> bool:
-    """Every wire (of :func:`helix_arrays` ``a``) under :data:`THIN_WIRE_PX` in radius
-    on screen."""
-    if view is None:
-        return False
-    end = a["pos"] + a["R"][:, :, 0] * a["length"][:, None]
-    ppu = np.maximum(pixels_per_unit(view, a["pos"], a["radius"] + a["wire"]),
-                     pixels_per_unit(view, end, a["radius"] + a["wire"]))
-    return bool(np.max(a["wire"] * ppu) < THIN_WIRE_PX)
-
-
-def cull_back_faces(batch, style: dict, view=None, centres=None, radii=None) -> None:
-    """Opaque closed surfaces (spheres, a helix's wire) skip their far side: its
-    triangles face away from the camera and are hidden by the near side anyway, and
-    llvmpipe's render of AtomicSolid takes about half the time (the picture differs
-    in 0.001 % of pixels, by at most 37/255, anti-aliased). Transparent ones keep it.
-    The triangles are counter-clockwise seen from outside. GlowScript culls nothing
-    (WebGLRenderer.js leaves ``gl.CULL_FACE`` off), so with ``centres`` and ``radii``
-    (spheres) nothing is culled unless a camera (``view``) is outside all of them."""
-    if batch.actor is None:
-        return
-    cull = style["opacity"] >= 1
-    if centres is not None:
-        cull = cull and view is not None and bool(np.all(
-            np.linalg.norm(centres - view.position, axis=1) > radii + 2 * view.near))
-    batch.actor.GetProperty().SetBackfaceCulling(bool(cull))
-
-
-def no_frustum_culler(renderer) -> None:
-    """Drop VTK's frustum culler from ``renderer``. It skips only actors wholly outside
-    the view (no pixel changes; AtomicSolid measured identical), but asks every actor
-    for its bounds at every render, and a batch whose points moved has them recomputed
-    over its cells (VTK 9.5 ``vtkPolyData::GetCellsBounds``): 4-8 ms a frame for
-    AtomicSolid's 900,000 triangles. The renderer places its camera and clipping range
-    itself (``apply_view``), so nothing else asks for them."""
-    renderer.GetCullers().RemoveAllItems()
-
-
-def _starts(groups) -> list[int]:
-    sizes = [len(template(c, w, n, s).s) * k for c, w, n, s, k in groups]
-    return list(np.cumsum([0] + sizes[:-1]))
-
-
-__all__ = ["cull_back_faces", "no_frustum_culler", "CHORD_STEPS",
-           "SIDE_STEPS", "template", "place", "helix_arrays", "pixels_per_unit",
-           "detail", "mesh", "draw"]
+__all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "helix_arrays",
+           "pixels_per_unit", "detail", "mesh", "groups"]

@@ -157,6 +157,7 @@ def run(reporter: Reporter, request: dict) -> None:
 
     try:
         result = run_program(program, out, options, on_frame=on_frame,
+                             on_end=lineage.end_if_copy,
                              on_dialect=lambda d: reporter.send("dialect", name=d.name,
                                                                 dialect_kind=d.kind))
     except ProgramExit as exc:

@@ -30,7 +30,6 @@ from pathlib import Path
 
 from ...errors import ProgramError
 from ... import video
-from . import session
 
 PR_SET_PDEATHSIG = 1
 PR_SET_CHILD_SUBREAPER = 36
@@ -220,7 +219,7 @@ def end_descendants(rounds: int = 20) -> None:
 
 def guard_forks(report_fd: int) -> None:
     """From now on, a fork of this process lets go of ``report_fd`` and the encoders' pipes,
-    and ends when its program ends (:data:`.session.program_end_hooks`)."""
+    and ends when its program ends (:func:`end_if_copy`, the run's ``on_end``)."""
     def in_copy() -> None:
         if os.getpid() == _state["pid"]:
             return
@@ -231,7 +230,6 @@ def guard_forks(report_fd: int) -> None:
             _to_devnull(fd)
 
     os.register_at_fork(after_in_child=in_copy)
-    session.program_end_hooks.append(_end_if_copy)
 
 
 def _to_devnull(fd: int) -> None:
@@ -248,7 +246,7 @@ def _to_devnull(fd: int) -> None:
         os.close(null)
 
 
-def _end_if_copy(error: BaseException | None) -> None:
+def end_if_copy(error: BaseException | None) -> None:
     """In a fork of the program, its end is the process's end, as Python would end it:
     ``sys.exit(n)``'s status (and text), 1 with its traceback for an error, else 0; the
     copy's output flushed and its exit functions run, springscene's epilogue skipped."""

@@ -35,7 +35,15 @@ from ..page.html_page import write_page
 from .options import DEFAULT_DURATION, RunOptions, check_request
 from .session import ProgramSession
 
-_PACKAGE = str(Path(__file__).resolve().parents[2])        # springscene itself
+_PACKAGE = Path(__file__).resolve().parents[2]         # springscene itself
+_EXAMPLES = _PACKAGE / "examples"                       # programs it ships: a user's own
+
+
+def _ours(filename: str) -> bool:
+    """Whether a traceback's frame is springscene's own code, not a program's (one of the
+    examples it ships included)."""
+    path = Path(filename).resolve()
+    return path.is_relative_to(_PACKAGE) and not path.is_relative_to(_EXAMPLES)
 
 
 @dataclass
@@ -82,7 +90,7 @@ def _user_traceback(exc: BaseException) -> str:
             return
         seen.add(id(t))
         t.stack = traceback.StackSummary.from_list(
-            [f for f in t.stack if not str(Path(f.filename).resolve()).startswith(_PACKAGE)])
+            [f for f in t.stack if not _ours(f.filename)])
         strip(t.__cause__, seen)
         strip(t.__context__, seen)
 
@@ -94,14 +102,14 @@ def _program_line(exc: BaseException) -> str:
     """``"prog.py, line 3: "``: the program's innermost frame in ``exc``'s traceback."""
     where = ""
     for frame in traceback.extract_tb(exc.__traceback__):
-        if not str(Path(frame.filename).resolve()).startswith(_PACKAGE):
+        if not _ours(frame.filename):
             where = f"{frame.filename}, line {frame.lineno}: "
     return where
 
 
 def run_program(program, out, options: RunOptions = RunOptions(), *,
-                on_frame: Callable | None = None,
-                on_dialect: Callable | None = None) -> ProgramResult:
+                on_frame: Callable | None = None, on_dialect: Callable | None = None,
+                on_end: Callable | None = None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF, ...) or final still (PNG).
 
     A frame is the program's page as VPython lays it out (titles, canvases, captions,
@@ -109,7 +117,8 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     its own size. Beside ``out`` go ``<out's name>.html`` (the page VPython would show,
     with the video), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
     ``on_frame(index, image)`` is called for each frame taken (for tests);
-    ``on_dialect(dialect)`` once the program's dialect is known, before it runs.
+    ``on_dialect(dialect)`` once the program's dialect is known, before it runs;
+    ``on_end(error)`` once the program has ended (:class:`.session.ProgramSession`).
     """
     request = check_request(program, out, options)
     path, out, still = request.program, request.out, request.still
@@ -131,7 +140,7 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
         timeline.on_render = lambda: (attachments.update(), autoscale.at_render())
         try:
             ended = _execute(code, path, dialect, timeline, _capturer(out, film, images),
-                             request.limit, film)
+                             request.limit, film, on_end)
         except BaseException:
             film.close(False)
             raise
@@ -205,7 +214,8 @@ def _compile(path: Path) -> tuple[types.CodeType, compiling.Dialect]:
 
 
 def _execute(code: types.CodeType, path: Path, dialect: compiling.Dialect,
-             timeline: runtime.Timeline, capture: Callable, limit: str, film: Film) -> str:
+             timeline: runtime.Timeline, capture: Callable, limit: str, film: Film,
+             on_end: Callable | None = None) -> str:
     """Run the program as ``__main__`` in its :class:`.session.ProgramSession`; how it
     ended ("program" or ``limit``)."""
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
@@ -214,7 +224,7 @@ def _execute(code: types.CodeType, path: Path, dialect: compiling.Dialect,
         names.update(glowscript.names(vp), **compiling.HELPERS)
     film.printed = Printed(sys.stdout)
     with ProgramSession(path, dialect, timeline, capture,
-                        lambda cv: film.renderer(cv).sync(), film.printed):
+                        lambda cv: film.renderer(cv).sync(), film.printed, on_end):
         return _run(code, names, path, limit)
 
 

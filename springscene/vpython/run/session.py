@@ -10,9 +10,9 @@ renderer, a VPython 6 program gets its lenient vectors and ``time.clock``.
 exit, in the reverse order, however the program ended; the modules the program imported
 from its own folder are forgotten, so a second run in this process imports them afresh.
 
-:data:`program_end_hooks` are called with the program's error (None when it ended
-normally) as soon as it has ended, before anything is put back: a fork of the program
-(:mod:`.lineage`) ends there.
+``on_end(error)`` is called with the program's error (None when it ended normally) as
+soon as it has ended, before anything is put back: a fork of the program ends there
+(:func:`.lineage.end_if_copy`).
 """
 
 from __future__ import annotations
@@ -26,27 +26,26 @@ from typing import Callable, Iterator
 from .. import api
 from ..api import runtime
 from ..api.canvases import canvas
-from ..api.vectors import set_lenient
+from ..api.vectors import is_lenient, set_lenient
 from ..dialects import compiling, visual6
-
-#: called with the program's error (or None) once it has ended, before the state is put back
-program_end_hooks: list[Callable[[BaseException | None], None]] = []
-
 
 class ProgramSession(contextlib.ExitStack):
     """The process as a program of ``dialect`` at ``path`` sees it, while the block runs.
 
     ``timeline`` is the clock ``rate`` and ``sleep`` advance; ``capture(cv, name)`` saves
     a canvas's picture; ``measure(cv)`` brings a canvas's renderer up to date (for its
-    size); ``stdout`` replaces ``sys.stdout`` (a tee that keeps what is printed).
+    size); ``stdout`` replaces ``sys.stdout`` (a tee that keeps what is printed);
+    ``on_end(error)``, if given, is called when the program has ended.
     """
 
     def __init__(self, path: Path, dialect: compiling.Dialect, timeline: runtime.Timeline,
-                 capture: Callable, measure: Callable, stdout) -> None:
+                 capture: Callable, measure: Callable, stdout,
+                 on_end: Callable[[BaseException | None], None] | None = None) -> None:
         super().__init__()
         self.path, self.dialect = path, dialect
         self.timeline, self.capture, self.measure, self.stdout = (timeline, capture, measure,
                                                                   stdout)
+        self.on_end = on_end
 
     def __enter__(self) -> ProgramSession:
         super().__enter__()
@@ -55,24 +54,20 @@ class ProgramSession(contextlib.ExitStack):
             self.enter_context(_program_modules(folder))
             self.enter_context(_swapped(sys, "argv", [str(self.path)]))
             self.enter_context(_first_on_path(str(folder)))
-            self.enter_context(_set(runtime.start, self.timeline, None))
-            self.enter_context(_set(runtime.set_capture, self.capture, None))
+            self.enter_context(_set(runtime.start, self.timeline, runtime.current()))
+            self.enter_context(_set(runtime.set_capture, self.capture, runtime.capturer()))
             self.enter_context(_swapped(canvas, "_measurer", self.measure))
             vpython6 = self.dialect.kind == "vpython6"
-            self.enter_context(_set(set_lenient, vpython6, False))
+            self.enter_context(_set(set_lenient, vpython6, is_lenient()))
             if vpython6 and not hasattr(time, "clock"):   # (gone in Python 3.8)
                 self.enter_context(_swapped(time, "clock", time.perf_counter))
             self.enter_context(_swapped(sys, "stdout", self.stdout))
-            self.push(_program_ended)
+            if self.on_end is not None:
+                self.push(lambda exc_type, exc, tb: self.on_end(exc))
         except BaseException:
             self.close()
             raise
         return self
-
-
-def _program_ended(exc_type, exc, tb) -> None:
-    for hook in list(program_end_hooks):
-        hook(exc)
 
 
 @contextlib.contextmanager
@@ -115,7 +110,8 @@ def _first_on_path(folder: str) -> Iterator[None]:
 def _program_modules(folder: Path) -> Iterator[None]:
     """``vpython`` and ``visual`` (with ``visual.graph`` and the rest) importing
     springscene's API within the block; afterwards the modules as they were, and those
-    the program imported from its own folder forgotten."""
+    the program imported from its own folder forgotten (not springscene's own, nor those
+    of this Python's installation, should the program's folder hold them)."""
     found = {"vpython": api, **visual6.modules(api)}
     saved = {name: sys.modules.get(name) for name in found}
     before = set(sys.modules)
@@ -130,5 +126,15 @@ def _program_modules(folder: Path) -> Iterator[None]:
                 sys.modules[name] = module
         for name in set(sys.modules) - before:
             file = getattr(sys.modules[name], "__file__", None)
-            if file and Path(file).resolve().is_relative_to(folder):
+            if file and _the_programs(Path(file).resolve(), folder):
                 del sys.modules[name]
+
+
+_KEPT = (Path(sys.prefix).resolve(), Path(sys.base_prefix).resolve(),
+         Path(api.__file__).resolve().parents[2])     # this Python's, and springscene
+
+
+def _the_programs(file: Path, folder: Path) -> bool:
+    """Whether a module's ``file`` is one of the program's own (in its folder, not in this
+    Python's installation nor springscene)."""
+    return file.is_relative_to(folder) and not any(file.is_relative_to(k) for k in _KEPT)
