@@ -400,7 +400,7 @@ _PYTHON_NAME = re.compile(r"python[0-9.]*")
 
 def _is_python(program) -> bool:
     """A Python interpreter, a script run by one (``#!...python``), or the ``springscene``
-    command (a sh launcher of one)."""
+    command (its console script)."""
     program = os.fsdecode(program)
     found = shutil.which(program) or program
     real = os.path.realpath(found)

@@ -29,7 +29,7 @@ VENV_BIN = Path(sys.prefix) / "bin"
 
 @pytest.mark.parametrize("program", ["python3", "springscene", "pip"])
 def test_the_guard_refuses_a_new_python_in_the_fast_tier(request, program):
-    """The interpreter, the command (a sh launcher of it) and a #!python script alike."""
+    """The interpreter, the command (its console script) and a #!python script alike."""
     assert request.node.get_closest_marker("slow") is None
     with pytest.raises(pytest.fail.Exception, match=r"is in the fast tier \(not marked slow\) "
                        r"but starts a new Python .*: mark it slow .* or run it in-process"):
@@ -111,7 +111,7 @@ def _test(path: str, name: str, function=_none):
 
 
 @pytest.mark.parametrize("item, slow", [
-    (_test("tests/reliability/test_launcher.py", "test_x"), True),
+    (_test("tests/reliability/test_command.py", "test_x"), True),
     (_test("tests/test_clean_install.py", "test_x"), True),
     (_test("tests/app/test_install.py", "test_x"), True),
     (_test("tests/app/test_readme.py", "test_x"), True),

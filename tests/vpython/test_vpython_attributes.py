@@ -147,7 +147,7 @@ def test_a_vector_component_notifies_its_owner():
         shared_defaults.default(0, 0, 0).x = 1
 
 
-def test_a_read_only_attribute_refuses_a_write_as_before():
+def test_a_read_only_attribute_refuses_a_write_in_pythons_words():
     t = Thing()
     assert (t.canvas, t.owner, t.fixed) == ("scene", "scene", 3)
     with pytest.raises(AttributeError, match="^canvas cannot be modified$"):

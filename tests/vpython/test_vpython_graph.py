@@ -9,7 +9,6 @@ disabled controls, graph images; written atomically.
 
 from __future__ import annotations
 
-import importlib
 import os
 from html.parser import HTMLParser
 from pathlib import Path
@@ -17,11 +16,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-# the package re-exports the class ``graph`` under the module's name: import the modules
-G = importlib.import_module("springscene.vpython.api.graphs")
-GI = importlib.import_module("springscene.vpython.page.graph_images")   # graphs as pictures
-W = importlib.import_module("springscene.vpython.api.widgets")
-P = importlib.import_module("springscene.vpython.page.html_page")
+from springscene.vpython.api import graphs as G
+from springscene.vpython.page import graph_images as GI   # graphs as pictures
+from springscene.vpython.api import widgets as W
+from springscene.vpython.page import html_page as P
 
 
 class V:

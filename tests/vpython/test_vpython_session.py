@@ -1,20 +1,25 @@
-"""A program's process state (springscene.vpython.run.session): set up in one place, put
-back whole however the program ends, and the end hooks called before anything is put back."""
+"""A program's run (springscene.vpython.run): its process state set up in one place and put
+back whole however the program ends, on_end called before anything is put back; its
+options as the supervised child gets them."""
 
 from __future__ import annotations
 
+import json
 import sys
 import time
 from pathlib import Path
 
 import pytest
 
+from springscene.errors import UserError
 from springscene.vpython import api
 from springscene.vpython.api import runtime
 from springscene.vpython.api.canvases import canvas
 from springscene.vpython.api.vectors import is_lenient
 from springscene.vpython.dialects.compiling import Dialect
+from springscene.vpython.geometry import lod
 from springscene.vpython.run import runner, session
+from springscene.vpython.run.options import RunOptions, check_lod
 from springscene.vpython.run.session import ProgramSession
 
 
@@ -102,3 +107,19 @@ def test_a_traceback_keeps_the_examples_frames_and_drops_springscenes():
     assert runner._ours(runner.__file__)
     assert not runner._ours(str(package / "examples" / "wiki_spring.py"))
     assert not runner._ours(str(package.parent / (package.name + "-notes") / "prog.py"))
+
+
+@pytest.mark.parametrize("options", [
+    RunOptions(),
+    RunOptions(duration=2.5, fps=25, overlays=("graph",), canvas_only=True, lod=0.3),
+    RunOptions(frames=3, antialias=False, page=False, quality="high", lod=lod.FULL),
+    RunOptions(lod=lod.LevelOfDetail(helix_px=0.2, sphere_steps=(12, 6))),
+])
+def test_options_go_to_the_child_and_back_through_json(options):
+    assert RunOptions.from_request(json.loads(json.dumps(options.to_request()))) == options
+
+
+def test_a_level_of_detail_given_as_itself_is_checked():
+    with pytest.raises(UserError, match="sphere_steps"):
+        check_lod(lod.LevelOfDetail(sphere_steps=()))
+    check_lod(lod.FULL)

@@ -13,9 +13,8 @@ from springscene import build, config
 from springscene.model import physics
 from wikiloop import wiki_loop
 from springscene.vpython.api import vmath
-import importlib
 
-V = importlib.import_module("springscene.vpython.api.vectors")   # the module (the package exports the class)
+from springscene.vpython.api import vectors as V
 from springscene.vpython.api import turns as T
 from springscene.vpython.api.vectors import (as_vector, comp, cross, diff_angle, dot, hat, mag,
                                              mag2, norm, proj, rotate, vec, vector)

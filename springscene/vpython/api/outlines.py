@@ -2,7 +2,7 @@
 
 ``shapes.circle(radius=2)`` is a list of ``[x, y]`` points in the xy plane, the
 last equal to the first; a shape with ``thickness`` (a frame) is ``[outer, inner]``.
-``paths.circle(radius=2)`` is the same figure as a list of :class:`.vectors` in the
+``paths.circle(radius=2)`` is the same figure as a list of :class:`.vectors.vector` in the
 xz plane (``[x, y]`` goes to ``vector(x, 0, -y)``, then turned so that y becomes
 ``up``, then moved by ``pos``). Both are plain lists a program may edit.
 

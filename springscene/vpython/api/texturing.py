@@ -87,7 +87,7 @@ def _note(message: str) -> None:
 
 
 def _program_folder() -> str:
-    """The running program's folder (the runner sets ``sys.argv[0]`` to the program)."""
+    """The running program's folder (its run sets ``sys.argv[0]`` to the program: :mod:`..run.session`)."""
     return _folder_of(sys.argv[0] if sys.argv else "")
 
 

@@ -52,7 +52,7 @@ _Real = numbers.Real
 _new = object.__new__
 
 
-_lenient = False     # VPython 6's vectors, for its programs only (set by the runner)
+_lenient = False     # VPython 6's vectors, for its programs only (:func:`set_lenient`)
 
 
 def set_lenient(flag: bool) -> None:

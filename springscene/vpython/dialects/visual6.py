@@ -259,7 +259,7 @@ def modules(vp: types.ModuleType) -> dict[str, types.ModuleType]:
 
 
 def is_lenient() -> bool:
-    return _vector_module._lenient
+    return _vector_module.is_lenient()
 
 
 __all__ = ["namespace", "modules", "is_lenient"]

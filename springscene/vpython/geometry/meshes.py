@@ -1,9 +1,9 @@
 """The meshes of VPython's objects, one function a kind, as numpy arrays.
 
 Each kind of object has a *template* mesh in its own local frame (the convention
-is :mod:`.placement`'s, which puts copies of it into the world). No VTK here
-(the sphere's vertex layout is taken once from :func:`pyvista.Sphere`, so a
-VPython ``sphere`` renders exactly like springscene's existing ball).
+is :mod:`.placement`'s, which puts copies of it into the world). Plain numpy, but
+for the sphere's vertex layout, taken once from pyvista's core ``Sphere``, so a
+VPython ``sphere`` renders exactly like the wiki scene's ball.
 
 VPython facts used (VPython 7, ``vpython/vpython-jupyter``; GlowScript,
 ``vpython/glowscript``):

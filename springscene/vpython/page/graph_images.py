@@ -8,8 +8,8 @@ cheaply by blitting: the static parts (axes, ticks, titles, legends) are drawn
 again only when they change. Drawing uses matplotlib's default style
 (:func:`springscene.view.plotstyle.panel_style`), whatever the user's matplotlibrc says.
 
-:func:`reset` forgets the figures kept for :func:`draw` (the package's ``reset``
-calls it with :func:`..api.graphs.reset`).
+:func:`reset` forgets the figures kept for :func:`draw` (a run starts with it: the
+figures of an earlier run in this process let go).
 """
 
 from __future__ import annotations

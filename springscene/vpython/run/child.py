@@ -26,7 +26,6 @@ from pathlib import Path
 from ...errors import ProgramError, UserError
 from . import lineage
 from ..api import runtime
-from ..geometry.lod import LevelOfDetail
 from .options import RunOptions
 from .runner import ProgramExit, _user_traceback, run_program
 
@@ -145,11 +144,7 @@ def _done(reporter: Reporter, result, read: set[str]) -> None:
 def run(reporter: Reporter, request: dict) -> None:
     """Run the request and report how it ended."""
     program, out = request["program"], request["out"]
-    given = request["options"]
-    lod = given["lod"]
-    options = RunOptions(**{**given, "overlays": tuple(given["overlays"]),
-                            "lod": LevelOfDetail(**{**lod, "sphere_steps": tuple(
-                                lod["sphere_steps"])}) if isinstance(lod, dict) else lod})
+    options = RunOptions.from_request(request["options"])
     read = _watch_reads(Path(out).parent.parent)     # out is in the private folder
 
     def on_frame(index: int, image) -> None:       # the parent knows where a death came

@@ -7,6 +7,7 @@ the same for the command line and the Python API.
 
 from __future__ import annotations
 
+import dataclasses
 import numbers
 import os
 from dataclasses import dataclass
@@ -55,6 +56,18 @@ class RunOptions:
         """What the renderers draw with."""
         return self.lod if isinstance(self.lod, LevelOfDetail) else coarser(self.lod)
 
+    def to_request(self) -> dict:
+        """The options as JSON-ready data, for a supervised run's child."""
+        return dataclasses.asdict(self)
+
+    @classmethod
+    def from_request(cls, data: dict) -> RunOptions:
+        """The options :meth:`to_request` gave."""
+        lod = data["lod"]
+        if isinstance(lod, dict):
+            lod = LevelOfDetail(**{**lod, "sphere_steps": tuple(lod["sphere_steps"])})
+        return cls(**{**data, "overlays": tuple(data["overlays"]), "lod": lod})
+
 
 class Request(NamedTuple):
     """A checked request: the program, the output, whether it is a still, and the frame
@@ -90,7 +103,12 @@ def check_request(program, out, options: RunOptions) -> Request:
 def check_lod(px) -> None:
     """``lod`` (``--lod``): None, or a number of pixels more than 0 and at most
     :data:`MAX_LOD_PX`; anything else is a one-line :class:`UserError`."""
-    if px is None or isinstance(px, LevelOfDetail):
+    if px is None:
+        return
+    if isinstance(px, LevelOfDetail):
+        if not px.sphere_steps or not all(isinstance(n, int) and n >= 3
+                                          for n in px.sphere_steps):
+            raise UserError(f"lod {px!r}: sphere_steps must be whole numbers of 3 or more")
         return
     ok = isinstance(px, numbers.Real) and not isinstance(px, bool) and 0 < px <= MAX_LOD_PX
     if not ok:                               # nan fails the comparison

@@ -28,7 +28,6 @@ While no frame comes for :data:`STALL_AFTER` s of wall clock, the reason is said
 from __future__ import annotations
 
 import contextlib
-import dataclasses
 import errno
 import glob
 import json
@@ -77,7 +76,8 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
     wall clock) and ``max_memory`` (bytes, or a size such as ``"2G"``). ``say(line)`` gets
     the diagnoses while no frame comes (default: stderr). Raises :class:`RunEnded`,
     :class:`ProgramError` or :class:`UserError`."""
-    path, out = check_request(program, out, options)[:2]
+    checked = check_request(program, out, options)
+    path, out = checked.program, checked.out
     limit = memory_limit(max_memory)
     if timeout is not None and not (timeout > 0 and timeout != float("inf")):
         raise UserError(f"--timeout {timeout:g}: must be a number of seconds above 0")
@@ -93,7 +93,7 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
     try:
         with _stop_signals():
             request = {"program": str(path), "out": str(folder / out.name),
-                       "options": dataclasses.asdict(options),
+                       "options": options.to_request(),
                        "parent_thread": threading.get_native_id()}   # (see .lineage)
             report = _supervise(_start(request), watch, on_dialect)
             return _finish(report, watch, folder, out)
