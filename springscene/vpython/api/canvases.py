@@ -517,3 +517,8 @@ class local_light(_Light):
         self._pos = _vec(args.pop("pos", vector(0, 0, 0)), "pos")
 
     pos = Linked(_vec)
+
+
+def canvases() -> list[canvas]:
+    """Every canvas a program has made since the last reset, the default ``scene`` first."""
+    return list(canvas._all)

@@ -52,7 +52,7 @@ _selected: "graph | None" = None
 
 # --------------------------------------------------------------------------- helpers
 
-def _rgb(value: Any, name: str) -> tuple[float, float, float]:
+def rgb_of(value: Any, name: str) -> tuple[float, float, float]:
     """A colour given as a VPython vector (``.x .y .z`` in 0..1) or a 3-sequence, as an RGB tuple.
 
     Raises
@@ -74,7 +74,7 @@ def _rgb(value: Any, name: str) -> tuple[float, float, float]:
 
 def _colour(value: Any, name: str) -> Any:
     """``value`` as given, once :func:`_rgb` finds it a colour."""
-    _rgb(value, name)
+    rgb_of(value, name)
     return value
 
 
@@ -172,8 +172,8 @@ class graph:
         self.align: str = args.pop("align", "none")
         self.foreground = args.pop("foreground", (0.0, 0.0, 0.0))
         self.background = args.pop("background", (1.0, 1.0, 1.0))
-        _rgb(self.foreground, "foreground")
-        _rgb(self.background, "background")
+        rgb_of(self.foreground, "foreground")
+        rgb_of(self.background, "background")
         for a in ("x", "y"):                      # GlowScript drops these silently
             args.pop(a, None)
         self.user_attributes: dict[str, Any] = dict(args)
@@ -183,7 +183,7 @@ class graph:
                     "For a scrolling graph, both xmin and xmax must be specified.")
             if self.xmax <= self.xmin:
                 raise AttributeError("For a scrolling graph, xmax must be greater than xmin.")
-        self.series: list[_gobj] = []
+        self.series: list[GraphSeries] = []
         self.deleted = False
         _made.append(self)
         _selected = self
@@ -224,7 +224,7 @@ _SERIES_OPTIONS = {
 }
 
 
-class _gobj:
+class GraphSeries:
     """What gcurve, gdots, gvbars and ghbars share: their data, colour, label, graph."""
 
     _kind = "lines"          # "lines", "points" or "bars"
@@ -244,9 +244,9 @@ class _gobj:
             raise AttributeError("graph must be a graph")
         self._graph = g
         self._color: Any = args.pop("color", (0.0, 0.0, 0.0))
-        _rgb(self._color, "color")
+        rgb_of(self._color, "color")
         self.marker_color: Any = args.pop("marker_color", self._color)
-        _rgb(self.marker_color, "marker_color")
+        rgb_of(self.marker_color, "marker_color")
         self.width = float(args.pop("width", 2))
         markers = bool(args.pop("markers", False))
         if markers and self._kind != "lines":
@@ -270,7 +270,7 @@ class _gobj:
         self.dot = dot
         self.dot_radius = float(args.pop("dot_radius", self.dot_radius))
         self.dot_color: Any = args.pop("dot_color", self._color)
-        _rgb(self.dot_color, "dot_color")
+        rgb_of(self.dot_color, "dot_color")
         self._interval = int(args.pop("interval", -1))
         self._iterations = 0
         self._firstplot = True
@@ -380,7 +380,7 @@ class _gobj:
         return f"<{type(self).__name__} {self.label!r}, {self._n} points>"
 
 
-class gcurve(_gobj):
+class gcurve(GraphSeries):
     """Points joined by a line (VPython's ``gcurve``): ``color``, ``width`` (2 px),
     ``markers``/``marker_color``/``radius``, ``dot``/``dot_color``/``dot_radius``,
     ``label``, ``legend``, ``data``, ``interval``, ``visible``, ``graph``."""
@@ -388,19 +388,19 @@ class gcurve(_gobj):
     _kind = "lines"
 
 
-class gdots(_gobj):
+class gdots(GraphSeries):
     """Points as dots (VPython's ``gdots``): ``radius`` (3 px) or ``size``, ``color``, ..."""
 
     _kind = "points"
 
 
-class gvbars(_gobj):
+class gvbars(GraphSeries):
     """Vertical bars from 0 to y centred on x (VPython's ``gvbars``), ``delta`` wide (1)."""
 
     _kind = "bars"
 
 
-class ghbars(_gobj):
+class ghbars(GraphSeries):
     """Horizontal bars from 0 to x centred on y (VPython's ``ghbars``), ``delta`` high (1)."""
 
     _kind = "bars"

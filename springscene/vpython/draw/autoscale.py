@@ -37,7 +37,7 @@ import numpy as np
 
 from ..api import frames
 from ..geometry import placement, meshes
-from ..api.canvases import canvas
+from ..api.canvases import canvases
 
 CENTERED = ("box", "sphere", "ring", "compound")
 ANCHORED = ("cylinder", "cone", "pyramid", "helix")
@@ -473,7 +473,7 @@ def update(cv) -> None:
 
 def at_render() -> None:
     """VPython's autoscale at one render, for every canvas with autoscale on."""
-    for cv in canvas._all:
+    for cv in canvases():
         if cv._autoscale and cv._objects:
             with frames.in_world(cv._objects):
                 update(cv)

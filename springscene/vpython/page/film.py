@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ...outputs import VideoWriter
-from ..api.canvases import canvas
+from ..api.canvases import canvas, canvases
 from ..draw.renderer import Renderer
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..api.graphs import graphs
@@ -83,7 +83,7 @@ class Film:
         return r
 
     def _choose_canvas(self):
-        shown = [cv for cv in canvas._all if cv._visible and cv._objects]
+        shown = [cv for cv in canvases() if cv._visible and cv._objects]
         if len(shown) > 1:
             self.notes.append(f"{len(shown)} canvases have objects; with --canvas-only the "
                               "video shows the first")
@@ -98,7 +98,7 @@ class Film:
     def page(self) -> np.ndarray:
         """The page now: titles, canvases, captions and graphs in page order."""
         items = []
-        for it in PageLayout.order(canvas._all, graphs()):
+        for it in PageLayout.order(canvases(), graphs()):
             if isinstance(it, canvas):
                 items.append((it.title, it.caption, self.renderer(it).frame()))
             else:
@@ -146,7 +146,7 @@ class Film:
         graphs alone for a program that draws only graphs)."""
         image = self.picture()
         if self.writer is None:
-            self.graphs_only = not any(cv._objects for cv in canvas._all) and bool(graphs())
+            self.graphs_only = not any(cv._objects for cv in canvases()) and bool(graphs())
             if self.graphs_only:
                 self.notes.append("the program draws only graphs: the video shows them")
             if "graph" in self.overlays or self.graphs_only:

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from ..api.graphs import _gobj, _rgb, graph
+from ..api.graphs import GraphSeries, graph, rgb_of
 
 DPI = 100
 TICK_FONT_PX = 12          # tick labels and legend
@@ -168,7 +168,7 @@ class _Panel:
         self.key: tuple | None = None
 
     # ---- artists of each series
-    def _artists(self, s: _gobj) -> dict[str, Any]:
+    def _artists(self, s: GraphSeries) -> dict[str, Any]:
         from matplotlib.collections import PolyCollection  # noqa: PLC0415  heavy: matplotlib
         from matplotlib.lines import Line2D  # noqa: PLC0415  heavy: matplotlib
 
@@ -212,7 +212,7 @@ class _Panel:
                     v[:, :, 0] = p[:, 0:1] + [-half, half, half, -half]
                     v[:, :, 1] = np.outer(p[:, 1], [0, 0, 1, 1])
                 bars.set_verts(v)
-                rgb = _rgb(s.color, "color")
+                rgb = rgb_of(s.color, "color")
                 bars.set_facecolor((*rgb, 0.5))
                 bars.set_edgecolor(rgb)
                 bars.set_linewidth(_px_to_pt(1))
@@ -221,33 +221,33 @@ class _Panel:
             elif s._kind == "points":
                 pts = a["points"]
                 pts.set_data(p[:, 0], p[:, 1])
-                pts.set_color(_rgb(s.color, "color"))
+                pts.set_color(rgb_of(s.color, "color"))
                 pts.set_markersize(_px_to_pt(2 * s.radius))
                 pts.set_visible(show and len(p) > 0)
                 out.append(pts)
             else:
                 line, mk, dot = a["line"], a["markers"], a["dot"]
                 line.set_data(p[:, 0], p[:, 1])
-                line.set_color(_rgb(s.color, "color"))
+                line.set_color(rgb_of(s.color, "color"))
                 line.set_linewidth(_px_to_pt(s.width))
                 line.set_visible(show and len(p) > 0)
                 mk.set_data(p[:, 0], p[:, 1])
-                mk.set_color(_rgb(s.marker_color, "marker_color"))
+                mk.set_color(rgb_of(s.marker_color, "marker_color"))
                 mk.set_markersize(_px_to_pt(2 * s.radius))
                 mk.set_visible(show and s.markers and len(p) > 0)
                 dot.set_data(p[-1:, 0], p[-1:, 1])
-                dot.set_color(_rgb(s.dot_color, "dot_color"))
+                dot.set_color(rgb_of(s.dot_color, "dot_color"))
                 dot.set_markersize(_px_to_pt(2 * s.dot_radius))
                 dot.set_visible(show and s.dot and len(p) > 0)
                 out += [line, mk, dot]
         return out
 
-    def _legend_entries(self) -> list[_gobj]:
+    def _legend_entries(self) -> list[GraphSeries]:
         return [s for s in self.g.series
                 if s.visible and s.legend and s.label and not self.g.deleted]
 
     def _legend_entries_key(self) -> tuple:
-        return tuple((s.label, _rgb(s.color, "color"), s._kind) for s in self._legend_entries())
+        return tuple((s.label, rgb_of(s.color, "color"), s._kind) for s in self._legend_entries())
 
     def legend_artist(self):
         """The legend (made again only when what it lists changes), or None."""
@@ -263,7 +263,7 @@ class _Panel:
             self.legend = None
         self.legend_key = key
         if entries:
-            colors = [_rgb(s.color, "color") for s in entries]
+            colors = [rgb_of(s.color, "color") for s in entries]
             handles = [Patch(facecolor=(*c, 0.5), edgecolor=c) if s._kind == "bars"
                        else Line2D([], [], color=c, linewidth=2,
                                    marker="o" if s._kind == "points" else None,
@@ -288,8 +288,8 @@ class _Panel:
         g = self.g
         left, bottom, width, height = self.box
         title, xtitle, ytitle = plain_text(g.title), plain_text(g.xtitle), plain_text(g.ytitle)
-        fg = _rgb(g.foreground, "foreground")
-        bg = _graph_background(_rgb(g.background, "background"))
+        fg = rgb_of(g.foreground, "foreground")
+        bg = _graph_background(rgb_of(g.background, "background"))
         # margins (px) that fit the titles and tick labels
         top = 8 + (TITLE_FONT_PX * 1.3 * (title.count("\n") + 1) + 4 if title else 0)
         bot = 6 + TICK_FONT_PX * 1.3 + (TITLE_FONT_PX * 1.3 + 2 if xtitle else 0)

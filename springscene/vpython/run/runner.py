@@ -25,7 +25,7 @@ from ...errors import OutputError, ProgramError, UserError
 from ...outputs import atomic_path, write_png
 from .. import api as vp
 from ..api import attachments, runtime, widgets
-from ..api.canvases import CanvasSizeError, canvas
+from ..api.canvases import CanvasSizeError, canvas, canvases
 from ..api.graphs import graphs
 from ..dialects import compiling, glowscript
 from ..draw import autoscale
@@ -253,7 +253,7 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
     """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``."""
     written = list(graph_images.write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if page:
-        cv = next((c for c in canvas._all if c._objects), canvas.get_selected())
+        cv = next((c for c in canvases() if c._objects), canvas.get_selected())
         kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
         result.page = write_page(out.with_suffix(".html"), title_html=cv.title,
                                  caption_html=cv.caption, media=out.name, media_kind=kind,
