@@ -275,7 +275,7 @@ LONG_TESTS = {
     "tests/vpython/test_vpython_impostors.py::test_impostors_draw_the_full_detail_spheres": 16.0,
     "tests/vpython/test_vpython_instanced.py::test_instances_draw_the_placed_meshes_picture": 0.9,
     "tests/vpython/test_vpython_labels.py::test_labels_match_real_vpythons_picture": 2.5,
-    "tests/vpython/test_vpython_lod.py::test_coarser_detail_draws_fewer_polygons_near_the_full_picture": 1.2,
+    "tests/vpython/test_vpython_lod.py::test_a_coarser_level_draws_fewer_polygons_near_the_full_picture": 1.2,
     "tests/vpython/test_vpython_lod.py::test_lattice_at_its_detail_is_within_the_image_tolerance": 2.4,
     "tests/vpython/test_vpython_lod.py::test_renderer_draws_a_lattice_of_helices_in_one_batch": 1.3,
     "tests/vpython/test_vpython_object_memory.py::test_impostors_drawn_in_chunks_give_the_same_pixels": 0.7,

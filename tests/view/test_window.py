@@ -18,7 +18,7 @@ from conftest import ROOT, WIKI
 from springscene.view import backend, window
 from springscene.view.scene import LIGHTS, grab
 
-GIF_PEAK_MB = 300           # a 30 s GIF of the page's scene peaks under 300 MB
+GIF_PEAK_MIB = 300          # a 30 s GIF of the page's scene peaks under 300 MiB (measured: 287)
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -42,14 +42,14 @@ def look_down_z(win: window.Window, distance: float = 1.0) -> None:
 
 def run_main(*args: str) -> dict:
     """The CLI's main in a fresh interpreter: its status, which of pyvista, pyvista.plotting
-    and matplotlib it imported, and its peak RSS (MB): the kernel's VmHWM of the new
+    and matplotlib it imported, and its peak RSS (MiB): the kernel's VmHWM of the new
     program, since ``getrusage``'s ``ru_maxrss`` of a child of this (large) pytest process
     starts at the parent's size, kept across the fork and exec."""
     code = textwrap.dedent(f"""
         import json, sys
         from springscene.app.cli import main
 
-        def peak_mb():        # this program's own high-water mark
+        def peak_mib():        # this program's own high-water mark
             for line in open("/proc/self/status"):
                 if line.startswith("VmHWM:"):
                     return int(line.split()[1]) / 1024
@@ -58,7 +58,7 @@ def run_main(*args: str) -> dict:
         print(json.dumps({{"status": status,
                           "modules": sorted(m for m in ("matplotlib", "pyvista", "pyvista.plotting")
                                             if m in sys.modules),
-                          "peak_mb": peak_mb()}}))
+                          "peak_mib": peak_mib()}}))
     """)
     proc = subprocess.run([sys.executable, "-c", code], cwd=ROOT, capture_output=True,
                           text=True, timeout=600)
@@ -68,15 +68,15 @@ def run_main(*args: str) -> dict:
     return report
 
 
-def test_a_wiki_gif_loads_no_pyvista_plotting_nor_matplotlib_and_stays_under_300_mb(tmp_path):
+def test_a_wiki_gif_loads_no_pyvista_plotting_nor_matplotlib_and_stays_under_300_mib(tmp_path):
     """A 3 s GIF of the page's scene imports pyvista's core (its meshes) but neither
-    ``pyvista.plotting`` nor matplotlib, and peaks under 300 MB (the set-up and the first
-    frames are the peak: a 30 s GIF peaks within a few MB of it)."""
+    ``pyvista.plotting`` nor matplotlib, and peaks under 300 MiB (the set-up and the first
+    frames are the peak: a 30 s GIF peaks within a few MiB of it)."""
     out = tmp_path / "wiki.gif"
     report = run_main("render", str(WIKI), "--out", str(out), "--duration", "3")
     assert out.stat().st_size > 10_000
     assert report["modules"] == ["pyvista"]
-    assert report["peak_mb"] < GIF_PEAK_MB
+    assert report["peak_mib"] < GIF_PEAK_MIB
 
 
 def test_a_lattice_still_loads_no_pyvista_plotting(tmp_path):

@@ -329,7 +329,7 @@ COARSE_MEAN_DIFF = 1.5
 
 
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
-def test_coarser_detail_draws_fewer_polygons_near_the_full_picture(antialias):
+def test_a_coarser_level_draws_fewer_polygons_near_the_full_picture(antialias):
     """``springscene vpython --lod 0.3`` (:func:`lod.coarser`): AtomicSolid-like springs
     with fewer chords and sides, anti-aliased too, the picture within the stated bound of
     full detail but outside the image tolerance."""
