@@ -162,7 +162,7 @@ def test_a_signal_at_any_moment_of_start_up_ends_it_or_is_handled(tmp_path):
         out = tmp_path / str(i)
         out.mkdir()
         proc = _still(out)
-        time.sleep(i * 0.003)
+        time.sleep(0.3 * (i / 29) ** 2)     # 0 to 0.3 s, dense at first: start-up and after
         proc.send_signal(signum)
         status, err, left = _outcome(proc, out)
         if status == 128 + signum:
