@@ -18,7 +18,12 @@ from conftest import ROOT, WIKI
 from springscene.view import backend, window
 from springscene.view.scene import LIGHTS, grab
 
-GIF_PEAK_MIB = 300          # a 30 s GIF of the page's scene peaks under 300 MiB (measured: 287)
+# a 30 s GIF of the page's scene peaks at 287 MiB (pyvista's core, which makes the meshes,
+# about 31 of them); a venv installed moments before (CI's) reads about 25 MiB more, its
+# just-written libraries mapped from the page cache in larger pieces (the same run after
+# `drop_caches`: 286 MiB). pyvista.plotting and matplotlib, which the window avoids, would
+# add about 80 MiB.
+GIF_PEAK_MIB = 330
 
 
 @pytest.fixture(scope="module", autouse=True)
@@ -68,9 +73,9 @@ def run_main(*args: str) -> dict:
     return report
 
 
-def test_a_wiki_gif_loads_no_pyvista_plotting_nor_matplotlib_and_stays_under_300_mib(tmp_path):
+def test_a_wiki_gif_loads_no_pyvista_plotting_nor_matplotlib_and_stays_in_its_memory(tmp_path):
     """A 3 s GIF of the page's scene imports pyvista's core (its meshes) but neither
-    ``pyvista.plotting`` nor matplotlib, and peaks under 300 MiB (the set-up and the first
+    ``pyvista.plotting`` nor matplotlib, and peaks under :data:`GIF_PEAK_MIB` (the set-up and the first
     frames are the peak: a 30 s GIF peaks within a few MiB of it)."""
     out = tmp_path / "wiki.gif"
     report = run_main("render", str(WIKI), "--out", str(out), "--duration", "3")

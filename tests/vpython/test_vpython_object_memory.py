@@ -332,7 +332,7 @@ def _frames_drawn(n: int, antialias: bool) -> tuple[list, int]:
             b.visible = False
         images.append(r.frame())
         (batch,) = r._batches.values()
-        assert batch.no_meshes and int(batch.lod[1].sum()) == n // 3   # impostors only
+        assert batch.no_meshes and int(batch.drawn_detail[1].sum()) == n // 3   # impostors only
         return images, len(batch.impostors.chunks)
     finally:
         r.close()
