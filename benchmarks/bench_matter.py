@@ -67,7 +67,7 @@ def rate(s: physics.System, steps: int) -> float:
 def per_object_rate(n: int, spheres: bool) -> float:
     """Bond updates per second of the page's loop written per object (examples/lattice.py)."""
     from springscene.vpython import api as vp
-    from springscene.vpython.api.vectors import mag, norm, vector
+    from springscene.vpython.core.vectors import mag, norm, vector
 
     s = build.system(crystal(n))
 

@@ -144,11 +144,13 @@ def test_one_si_prefix_table_one_matplotlib_setup_one_set_of_lights():
 
 def test_no_vpython_module_shares_a_name_with_a_vpython_object():
     """``from vpython import *`` gives objects (``vector``, ``canvas``, ``graph``, ``shapes``,
-    ``textures``, ...) from :mod:`springscene.vpython.api`; no module of that package has
-    one of their names, so an import of either can never give the other."""
+    ``textures``, ...) from :mod:`springscene.vpython.api`; no module of the rooms they
+    live in (api, objects, core) has one of their names, so an import of either can
+    never give the other."""
     from springscene.vpython import api
 
-    modules = {p.stem for p in (PACKAGE / "vpython" / "api").glob("*.py")}
+    modules = {p.stem for room in ("api", "objects", "core")
+               for p in (PACKAGE / "vpython" / room).glob("*.py")}
     assert not modules & set(api.__all__)
     assert not [n for n in ("vector", "canvas", "graph", "shapes", "textures")
                 if isinstance(getattr(api, n), type(api))]

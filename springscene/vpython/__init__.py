@@ -10,7 +10,8 @@ package is in rooms, each importing only the rooms below it (a ``layers`` contra
   the HTML page;
 - :mod:`.draw`: the VTK renderer; :mod:`.dialects`: the names and source leniencies of
   Web VPython and VPython 6;
-- :mod:`.api`: what ``from vpython import *`` gives a program (vectors, objects, canvases,
-  graphs, widgets, shapes and paths, textures);
+- :mod:`.api`: what ``from vpython import *`` gives a program (the namespace, graphs,
+  textures, attachments), on :mod:`.objects` (the 3D objects as data) and :mod:`.core`
+  (vectors, the clock, canvases, controls, attribute declarations and checks);
 - :mod:`.geometry`: objects to numpy meshes; :mod:`.text`: fonts and text layout.
 """

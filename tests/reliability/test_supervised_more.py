@@ -374,7 +374,7 @@ def test_no_frame_after_the_programs_end_says_the_video_is_being_finished():
 
 
 def test_a_capture_name_that_is_not_text_is_vpythons_type_error():
-    from springscene.vpython.api.canvases import capture_name
+    from springscene.vpython.core.canvases import capture_name
 
     with pytest.raises(TypeError, match="'filename' for Capture must be a string."):
         capture_name(3)

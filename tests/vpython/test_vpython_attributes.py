@@ -1,4 +1,4 @@
-"""VPython's linked attributes declared once (:mod:`springscene.vpython.api.attributes`):
+"""VPython's linked attributes declared once (:mod:`springscene.vpython.core.attributes`):
 a value converted or refused with the attribute's name, stored in its slot, the change
 told to the renderer or the object; in-place vector changes reaching the object; writes
 refused as VPython words it; nothing kept per object."""
@@ -11,11 +11,12 @@ import traceback
 import pytest
 
 import springscene.vpython.api as vpython_module
-from springscene.vpython.api import attributes, checks, shared_defaults
-from springscene.vpython.api.attributes import Linked
-from springscene.vpython.api.checks import _vec, one_of
-from springscene.vpython.api.shared_defaults import Default
-from springscene.vpython.api.vectors import vector
+from springscene.vpython.core import attributes, checks
+from springscene.vpython.objects import shared_defaults
+from springscene.vpython.core.attributes import Linked
+from springscene.vpython.core.checks import _vec, one_of
+from springscene.vpython.objects.shared_defaults import Default
+from springscene.vpython.core.vectors import vector
 from springscene.vpython.run import runner
 
 

@@ -14,7 +14,7 @@ import pytest
 
 import springscene.vpython.api
 from springscene.vpython.draw import autoscale
-from springscene.vpython.api.canvases import canvas
+from springscene.vpython.core.canvases import canvas
 from springscene.vpython.geometry.object_meshes import object_mesh
 from springscene.vpython.run.runner import run_program
 from springscene.vpython.run.options import RunOptions

@@ -16,11 +16,11 @@ from springscene.vpython import api as vp
 from springscene.vpython.dialects import compiling, visual6
 from springscene.vpython.run.runner import run_program
 from springscene.vpython.run.options import RunOptions
-from springscene.vpython.api.vectors import vector
+from springscene.vpython.core.vectors import vector
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 # the module (the package's ``vector`` attribute is the class)
-vector_module = importlib.import_module("springscene.vpython.api.vectors")
+vector_module = importlib.import_module("springscene.vpython.core.vectors")
 
 
 def write(tmp_path, source: str, name: str = "prog.py"):

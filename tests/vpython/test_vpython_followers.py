@@ -156,7 +156,7 @@ def test_scene_objects_lists_no_trail_curve_as_vpython7_does(tmp_path):
     img = iio.imread(tmp_path / "x.png").astype(int)
     rows = np.nonzero(red(img))[0]
     assert rows.max() - rows.min() > 150          # the make_trail trail drawn, 0 to 6 up
-    from springscene.vpython.api.canvases import canvas
+    from springscene.vpython.core.canvases import canvas
     assert canvas._all[0]._autoscaled_range > 3   # range covers the trails (6 up, 6 down)
 
 

@@ -18,7 +18,7 @@ import pytest
 
 from springscene.vpython.api import graphs as G
 from springscene.vpython.page import graph_images as GI   # graphs as pictures
-from springscene.vpython.api import widgets as W
+from springscene.vpython.core import widgets as W
 from springscene.vpython.page import html_page as P
 
 

@@ -2,7 +2,7 @@
 
 ``standard`` keeps VPython's scalar defaults at class level, and an object's vectors at
 their default point to one read-only vector its class shares
-(:mod:`springscene.vpython.api.shared_defaults`); a program reading a vector (``ball.axis``)
+(:mod:`springscene.vpython.objects.shared_defaults`); a program reading a vector (``ball.axis``)
 gets the object's own copy then, so ``ball.axis.x = 2`` changes that object alone. The
 bytes are measured with tracemalloc in a fresh interpreter (a class's objects share one
 key table, which other tests' objects would have grown)."""
@@ -23,12 +23,12 @@ import math
 import numpy as np
 
 import springscene.vpython.api as vpython_module
-from springscene.vpython.api import frames, shared_defaults
+from springscene.vpython.objects import frames, shared_defaults
 from springscene.vpython.draw import impostors
 from springscene.vpython.draw.renderer import Renderer
-from springscene.vpython.api.objects import standard
-from springscene.vpython.api.shared_defaults import Default
-from springscene.vpython.api.vectors import vector
+from springscene.vpython.objects.standard_attributes import standard
+from springscene.vpython.objects.shared_defaults import Default
+from springscene.vpython.core.vectors import vector
 
 ROOT = Path(__file__).resolve().parents[2]
 

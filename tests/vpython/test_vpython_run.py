@@ -16,7 +16,7 @@ from imagecompare import check, compare
 from imagecompare import MAX_BAD_FRACTION, MAX_MEAN_DIFF
 from springscene import config, render
 from springscene.view import camera
-from springscene.vpython.api import runtime
+from springscene.vpython.core import runtime
 from springscene.vpython.run.runner import run_program
 from springscene.vpython.run.options import RunOptions
 
@@ -31,7 +31,7 @@ def write(tmp_path, source: str, name: str = "prog.py"):
 
 
 def ball_of(cv_index: int = 0):
-    from springscene.vpython.api.canvases import canvas
+    from springscene.vpython.core.canvases import canvas
 
     return next(o for o in canvas._all[cv_index]._objects if o._kind == "sphere")
 

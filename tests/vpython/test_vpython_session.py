@@ -13,9 +13,9 @@ import pytest
 
 from springscene.errors import UserError
 from springscene.vpython import api
-from springscene.vpython.api import runtime
-from springscene.vpython.api.canvases import canvas
-from springscene.vpython.api.vectors import is_lenient
+from springscene.vpython.core import runtime
+from springscene.vpython.core.canvases import canvas
+from springscene.vpython.core.vectors import is_lenient
 from springscene.vpython.dialects.compiling import Dialect
 from springscene.vpython.geometry import lod
 from springscene.vpython.run import runner, session

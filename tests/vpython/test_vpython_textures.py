@@ -31,7 +31,7 @@ def vp():
 
 
 def notes():
-    from springscene.vpython.api import widgets
+    from springscene.vpython.core import widgets
 
     return widgets.notes()
 

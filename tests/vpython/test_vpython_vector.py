@@ -14,9 +14,9 @@ from springscene.model import physics
 from wikiloop import wiki_loop
 from springscene.vpython.api import vmath
 
-from springscene.vpython.api import vectors as V
-from springscene.vpython.api import turns as T
-from springscene.vpython.api.vectors import (as_vector, comp, cross, diff_angle, dot, hat, mag,
+from springscene.vpython.core import vectors as V
+from springscene.vpython.core import turns as T
+from springscene.vpython.core.vectors import (as_vector, comp, cross, diff_angle, dot, hat, mag,
                                              mag2, norm, proj, rotate, vec, vector)
 
 
@@ -411,7 +411,7 @@ def test_module_exports():
     assert set(V.__all__) == want and set(T.__all__) == {'adjust_axis', 'adjust_up',
                                                          'object_rotate'}
     ns = {}
-    exec("from springscene.vpython.api.vectors import *", ns)
+    exec("from springscene.vpython.core.vectors import *", ns)
     assert want <= set(ns) and "as_vector" not in ns
     exec("from springscene.vpython.api import *", ns)          # VPython's namespace has all
     assert {'adjust_axis', 'adjust_up', 'object_rotate'} <= set(ns)

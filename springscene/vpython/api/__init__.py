@@ -3,7 +3,7 @@
 ``springscene vpython program.py`` runs a program with this module as ``vpython``. The
 names are VPython's: ``vector``, ``sphere``, ``box``, ``helix``, ``scene``, ``rate``,
 ``graph``, ``gcurve``, ``color`` and the rest (:data:`__all__`); one VPython has and this
-module has not fails with :class:`.checks.UnsupportedError` naming it. :func:`reset`
+module has not fails with :class:`..core.checks.UnsupportedError` naming it. :func:`reset`
 forgets every canvas, graph and control and makes a fresh default ``scene``.
 
 The objects are plain Python data; drawing them is :mod:`springscene.vpython.draw`'s job.
@@ -15,27 +15,28 @@ from types import SimpleNamespace as _SimpleNamespace
 
 from . import attachments, vmath
 from .attachments import attach_arrow, attach_trail
-from .canvases import canvas, color, distant_light, local_light
-from .checks import UnsupportedError
-from .compounds import compound
-from .curves import curve, points
-from .extrusions import extrusion
+from ..core.canvases import canvas, color, distant_light, local_light
+from ..core.checks import UnsupportedError
+from ..objects.compounds import compound
+from ..objects.curves import curve, points
+from ..objects.extrusions import extrusion
 from .graphs import gcurve, gdots, ghbars, graph, gvbars
 from .graphs import reset as _reset_graphs
-from .labels import label
-from .polygons import quad, triangle, vertex
-from .runtime import rate, sleep
-from .outlines import paths, shapes
-from .solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring, simple_sphere,
-                     sphere)
-from .text3d import text
+from ..objects.labels import label
+from ..objects.polygons import quad, triangle, vertex
+from ..core.runtime import rate, sleep
+from ..objects.outlines import paths, shapes
+from ..objects.solids import (arrow, box, cone, cylinder, ellipsoid, helix, pyramid, ring,
+                              simple_sphere, sphere)
+from ..objects.text3d import text
 from .texturing import bumpmaps, textures
 from .texturing import reset as _reset_textures
-from .vectors import comp, cross, diff_angle, dot, hat, mag, mag2, norm, proj, rotate, vec, vector
-from .turns import adjust_axis, adjust_up, object_rotate
-from .widgets import button, checkbox, menu, radio, slider, winput, wtext
-from .widgets import reset as _reset_widgets
-from .widgets import skipped as _skipped
+from ..core.vectors import (comp, cross, diff_angle, dot, hat, mag, mag2, norm, proj, rotate, vec,
+                            vector)
+from ..core.turns import adjust_axis, adjust_up, object_rotate
+from ..core.widgets import button, checkbox, menu, radio, slider, winput, wtext
+from ..core.widgets import reset as _reset_widgets
+from ..core.widgets import skipped as _skipped
 
 globals().update(vmath.NAMES)
 

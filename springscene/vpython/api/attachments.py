@@ -23,11 +23,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from . import runtime
-from .base import _current_canvas
-from .curves import curve, points
-from .solids import arrow
-from .vectors import vector
+from ..core import runtime
+from ..objects.base import _current_canvas
+from ..objects.curves import curve, points
+from ..objects.solids import arrow
+from ..core.vectors import vector
 
 _trails: list["attach_trail"] = []
 _arrows: list[arrow] = []

@@ -36,8 +36,8 @@ from typing import Any, Sequence
 
 import numpy as np
 
-from .attributes import Linked
-from .page_order import claim_slot
+from ..core.attributes import Linked
+from ..core.page_order import claim_slot
 
 __all__ = [
     "graph", "gcurve", "gdots", "gvbars", "ghbars", "gdisplay", "graphs", "reset",
@@ -73,7 +73,7 @@ def rgb_of(value: Any, name: str) -> tuple[float, float, float]:
 
 
 def _colour(value: Any, name: str) -> Any:
-    """``value`` as given, once :func:`_rgb` finds it a colour."""
+    """``value`` as given, once :func:`rgb_of` finds it a colour."""
     rgb_of(value, name)
     return value
 

@@ -33,7 +33,8 @@ from pathlib import Path
 import numpy as np
 
 from ..geometry.textured import TextureSpec, transform_uv
-from . import texture_images, widgets
+from . import texture_images
+from ..core import widgets
 
 # GlowScript's places to find its own texture files (primitives.js setup_texture)
 GLOWSCRIPT_PREFIXES = (":", "https://s3.amazonaws.com/glowscript/textures/",

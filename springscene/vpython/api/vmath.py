@@ -16,7 +16,7 @@ Besides its classes, VPython 7.6.5 puts these in a program's namespace:
 ``from springscene.vpython.api.vmath import *`` binds the same names.
 
 Not here, though VPython exports them too: the vector names (``vector``,
-``vec``, ``mag``, ``norm`` ...: :mod:`springscene.vpython.api.vectors`), ``rate`` and
+``vec``, ``mag``, ``norm`` ...: :mod:`springscene.vpython.core.vectors`), ``rate`` and
 ``sleep``, the canvas, object, graph and widget names, ``shapes``/``paths`` and
 their helpers (``vpython/shapespaths.py``), and the version lists ``version``
 and ``GSversion``.

@@ -24,7 +24,7 @@ import time
 import types
 from typing import Any
 
-from ..api import runtime, widgets
+from ..core import runtime, widgets
 
 _NAN = float("nan")
 

@@ -15,7 +15,7 @@ over the builtins (``max(a, b)`` then means an axis). The names numpy 1.x gave a
 numpy 2 dropped (``float_``, ``Inf``, ``product``, ...) are put back.
 
 Vectors: VPython 6 took tuples, lists and arrays wherever a vector goes and let a
-vector act as a sequence; :func:`springscene.vpython.api.vectors.set_lenient` turns that
+vector act as a sequence; :func:`springscene.vpython.core.vectors.set_lenient` turns that
 on for the run (the runner does it for VPython 6 programs).
 """
 
@@ -28,9 +28,9 @@ from typing import Any
 
 import numpy as np
 
-from ..api import vectors as _vector_module
-from ..api.vectors import as_vector, vector
-from ..api.frames import frame
+from ..core import vectors as _vector_module
+from ..core.vectors import as_vector, vector
+from ..objects.frames import frame
 from .visual6_extras import button, controls, ghistogram, materials, menu, slider, toggle
 
 # numpy names that would shadow a builtin VPython 6 programs use as the builtin

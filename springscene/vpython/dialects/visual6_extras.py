@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from ..api import runtime, widgets
+from ..core import runtime, widgets
 from ..api.graphs import gvbars
 from ..api.texturing import textures
 

@@ -35,9 +35,9 @@ import math
 
 import numpy as np
 
-from ..api import frames
+from ..objects import frames
 from ..geometry import placement, meshes
-from ..api.canvases import canvases
+from ..core.canvases import canvases
 
 CENTERED = ("box", "sphere", "ring", "compound")
 ANCHORED = ("cylinder", "cone", "pyramid", "helix")

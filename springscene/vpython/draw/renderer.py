@@ -8,7 +8,7 @@ is not touched. Labels are drawn over the grabbed frame (:mod:`.label_overlay`).
 
 Textured objects are batched per texture (VTK keeps one texture per actor) and
 drawn from GlowScript's textured meshes (:mod:`..geometry.textured`, :mod:`.batches`);
-triangles and quads (:mod:`..api.polygons`) are a kind of their own, coloured,
+triangles and quads (:mod:`..objects.polygons`) are a kind of their own, coloured,
 lit and textured per vertex.
 
 Lights, camera, autoscale and shading are those of
@@ -27,7 +27,8 @@ import numpy as np
 from ...view import backend, camera, window
 from ...view.scene import MULTI_SAMPLES, apply_view, grab
 from . import autoscale, culling, helix_batches, label_overlay, materials
-from ..api import frames, polygons, texturing
+from ..objects import frames, polygons
+from ..api import texturing
 from ..geometry import meshes, object_meshes, placement, point_meshes, textured
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template

@@ -19,7 +19,7 @@ VPython facts used (VPython 7, ``vpython/vpython-jupyter``; GlowScript,
   and ``makeSphere(0.5, 30)``'s UV sphere.
 
 VPython's size rules (default sizes, radius and size) are the objects' own
-(:mod:`springscene.vpython.api.solids`).
+(:mod:`springscene.vpython.objects.solids`).
 """
 
 from __future__ import annotations

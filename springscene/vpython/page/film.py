@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from ...outputs import VideoWriter
-from ..api.canvases import canvas, canvases
+from ..core.canvases import canvas, canvases
 from ..draw.renderer import Renderer
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..api.graphs import graphs

@@ -11,7 +11,7 @@ drawn as disabled HTML controls showing their initial values (there was no user)
 ``wtext`` shows its text, and each graph is an ``<img>``.
 
 Widgets go after the text of their area (``title`` or ``caption``), unless the area's
-HTML holds the widget's placeholder (:func:`..api.widgets.placeholder`), which is then
+HTML holds the widget's placeholder (:func:`..core.widgets.placeholder`), which is then
 replaced by it, so a widget appears where the program put it among the text.
 """
 
@@ -70,7 +70,7 @@ def widget_html(w: Any) -> str:
     Parameters
     ----------
     w : widget
-        A control or wtext from :mod:`..api.widgets` (read through its ``kind`` and
+        A control or wtext from :mod:`..core.widgets` (read through its ``kind`` and
         attributes).
     """
     kind = getattr(w, "kind", "")
@@ -154,7 +154,7 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
     graph_images : list of str
         PNGs of the graphs, in order (file names or paths).
     widgets : list
-        Controls and wtexts in the order made (:func:`..api.widgets.widgets_in_order`).
+        Controls and wtexts in the order made (:func:`..core.widgets.widgets_in_order`).
     printed : str
         What the program printed: GlowScript shows it in a box below the canvas.
     page_video : bool

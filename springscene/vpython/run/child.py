@@ -25,7 +25,7 @@ from pathlib import Path
 
 from ...errors import ProgramError, UserError
 from . import lineage
-from ..api import runtime
+from ..core import runtime
 from .options import RunOptions
 from .runner import ProgramExit, _user_traceback, run_program
 

@@ -2,7 +2,7 @@
 
 The program is the user's own code, run in this process as ``__main__`` with
 ``vpython`` (and the older ``visual``) importing springscene's module; no sandbox
-is promised. Its clock is :mod:`springscene.vpython.api.runtime`'s: frames are taken
+is promised. Its clock is :mod:`springscene.vpython.core.runtime`'s: frames are taken
 on ``rate`` calls, and the run ends when the program ends or when the video has
 its frames. An exception in the program is reported with the program's own
 traceback (its file and line, springscene's frames left out): :class:`ProgramError`;
@@ -24,8 +24,9 @@ from typing import Callable
 from ...errors import OutputError, ProgramError, UserError
 from ...outputs import atomic_path, write_png
 from .. import api as vp
-from ..api import attachments, runtime, widgets
-from ..api.canvases import CanvasSizeError, canvas, canvases
+from ..api import attachments
+from ..core import runtime, widgets
+from ..core.canvases import CanvasSizeError, canvas, canvases
 from ..api.graphs import graphs
 from ..dialects import compiling, glowscript
 from ..draw import autoscale

@@ -24,9 +24,9 @@ from pathlib import Path
 from typing import Callable, Iterator
 
 from .. import api
-from ..api import runtime
-from ..api.canvases import canvas
-from ..api.vectors import is_lenient, set_lenient
+from ..core import runtime
+from ..core.canvases import canvas
+from ..core.vectors import is_lenient, set_lenient
 from ..dialects import compiling, visual6
 
 class ProgramSession(contextlib.ExitStack):

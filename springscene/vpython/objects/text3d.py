@@ -30,10 +30,10 @@ from functools import lru_cache
 
 import numpy as np
 
-from .attributes import Linked
+from ..core.attributes import Linked
 from .compounds import Surface, fused
 from .extrusions import SMOOTH, Caps, Sweep, clean_contour, sweep
-from .vectors import vector
+from ..core.vectors import vector
 
 FONTS = {"sans": "DejaVu Sans", "serif": "DejaVu Serif"}
 BEZIER_STEPS = 8           # straight pieces per curve (GlowScript's addBezier)

@@ -13,10 +13,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .attributes import Linked
+from ..core.attributes import Linked
 from .base import _Base
-from .checks import _vec, one_of
-from .vectors import is_lenient, vector
+from ..core.checks import _vec, one_of
+from ..core.vectors import is_lenient, vector
 
 
 def _point(value, constructing: bool) -> dict:

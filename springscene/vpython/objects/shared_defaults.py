@@ -5,7 +5,7 @@ A sphere made with ``pos``, ``radius`` and ``color`` stores those and nothing el
 VPython's twenty-odd attributes; the rest are its class's (``standard``'s class-level
 scalars) or, for the vectors, one read-only :class:`Default` vector the whole class
 points to. An object copies a default vector the first time it changes it in place
-(:meth:`.objects.standard._own`), so ``ball.axis.x = 2`` changes that ball alone.
+(:meth:`.standard_attributes.standard._own`), so ``ball.axis.x = 2`` changes that ball alone.
 
 The default vectors are stored *on each object* (one pointer), not at class level:
 CPython 3.11 does not specialise an attribute read when the class holds an object of a
@@ -34,7 +34,7 @@ from __future__ import annotations
 import struct
 from math import copysign
 
-from .vectors import vector
+from ..core.vectors import vector
 
 LIMIT = 4096          # floats, and shared vectors, kept for reuse at most (then started afresh)
 PAUSE = 4 * LIMIT     # objects made without interning floats after a cache full of misses
@@ -127,7 +127,7 @@ def compact(obj) -> None:
     """A new solid's vectors shared (:func:`shared`), its ``pos``'s components interned;
     only vectors no program holds (no ``_on_change`` hook yet). Objects copy a shared
     vector before changing it in place, as they copy a default
-    (:meth:`.objects.standard._own`)."""
+    (:meth:`.standard_attributes.standard._own`)."""
     global _paused
     p = obj._pos
     if _paused:

@@ -2,7 +2,7 @@
 
 ``shapes.circle(radius=2)`` is a list of ``[x, y]`` points in the xy plane, the
 last equal to the first; a shape with ``thickness`` (a frame) is ``[outer, inner]``.
-``paths.circle(radius=2)`` is the same figure as a list of :class:`.vectors.vector` in the
+``paths.circle(radius=2)`` is the same figure as a list of :class:`..core.vectors.vector` in the
 xz plane (``[x, y]`` goes to ``vector(x, 0, -y)``, then turned so that y becomes
 ``up``, then moved by ``pos``). Both are plain lists a program may edit.
 
@@ -24,7 +24,7 @@ import math
 import numpy as np
 
 from . import gears
-from .vectors import vector
+from ..core.vectors import vector
 
 NP_DEFAULT = 64        # points in a full circle, ellipse or arc (VPython's npdefault)
 ROUND_SEGMENTS = 16    # points inside each rounded corner

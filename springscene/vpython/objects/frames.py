@@ -20,9 +20,9 @@ from typing import Any, Iterable, Iterator
 
 import numpy as np
 
-from .attributes import Linked
-from .checks import _vec
-from .vectors import vector
+from ..core.attributes import Linked
+from ..core.checks import _vec
+from ..core.vectors import vector
 
 
 def _basis(axis: vector, up: vector) -> np.ndarray:

@@ -27,10 +27,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from .attributes import Linked
-from .base import _Base, _current_canvas
-from .checks import _vec
-from .vectors import vector
+from ..core.attributes import Linked
+from .base import _Base, _current_canvas, component
+from ..core.checks import _vec
+from ..core.vectors import vector
 
 
 def _texpos(value, name: str) -> vector:
@@ -80,12 +80,7 @@ class vertex:
     emissive = Linked(bool, then="_changed")
     visible = Linked(bool, then="_changed")
     pickable = Linked(bool, then="_changed")
-    red = property(lambda self: self._color.x,
-                   lambda self, v: setattr(self, "color", vector(v, self._color.y, self._color.z)))
-    green = property(lambda self: self._color.y,
-                     lambda self, v: setattr(self, "color", vector(self._color.x, v, self._color.z)))
-    blue = property(lambda self: self._color.z,
-                    lambda self, v: setattr(self, "color", vector(self._color.x, self._color.y, v)))
+    red, green, blue = component("color", 0), component("color", 1), component("color", 2)
 
     canvas = Linked(readonly=True)
 

@@ -18,12 +18,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .attributes import Linked
-from .checks import _vec
+from ..core.attributes import Linked
+from ..core.checks import _vec
 from ..geometry.object_meshes import object_mesh
-from .objects import standard
+from .standard_attributes import standard
 from ..geometry.placement import Mesh
-from .vectors import vector
+from ..core.vectors import vector
 
 
 class Surface(NamedTuple):

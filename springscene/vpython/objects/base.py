@@ -1,19 +1,37 @@
 """What every drawable VPython object shares: its canvas, visibility and change flag.
 
 An object goes to the canvas given as ``canvas=``, else to the current one
-(:meth:`.canvases.canvas.get_selected`). It only marks itself changed (``_dirty``);
+(:meth:`..core.canvases.canvas.get_selected`). It only marks itself changed (``_dirty``);
 the renderer (:mod:`springscene.vpython.draw.renderer`) reads the objects of a canvas once
-a frame. :mod:`.objects`, :mod:`.curves` and :mod:`.labels` build on :class:`_Base`.
+a frame. :mod:`.standard_attributes`, :mod:`.curves` and :mod:`.labels` build on :class:`_Base`.
 """
 
 from __future__ import annotations
 
-from .attributes import Linked
-from .canvases import canvas
+from ..core.attributes import Linked
+from ..core.canvases import canvas
+from ..core.vectors import vector
 
 
 def _current_canvas():
     return canvas.get_selected()
+
+
+def component(attribute: str, index: int) -> property:
+    """One component of a vector attribute (``red`` is ``color.x``): read from the stored
+    vector; a write sets the whole attribute to a new vector, so that its check and its
+    change notice run as for any other write."""
+    store = "_" + attribute
+
+    def read(self):
+        return getattr(self, store)._xyz()[index]
+
+    def write(self, value) -> None:
+        parts = list(getattr(self, store)._xyz())
+        parts[index] = value
+        setattr(self, attribute, vector(*parts))
+
+    return property(read, write)
 
 
 class _Base:

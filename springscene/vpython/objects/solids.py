@@ -1,6 +1,6 @@
 """VPython's solid objects: box, pyramid, sphere, ellipsoid, cylinder, cone, arrow, helix, ring.
 
-Each is a :class:`.objects.standard` with its own kind, default size and the
+Each is a :class:`.standard_attributes.standard` with its own kind, default size and the
 attributes VPython gives it (``radius``, ``shaftwidth``, ``coils``, ``thickness``,
 ...), all views of ``size`` where VPython has them so. The meshes they are drawn
 with are in :mod:`..geometry.meshes`.
@@ -8,9 +8,9 @@ with are in :mod:`..geometry.meshes`.
 
 from __future__ import annotations
 
-from .attributes import Linked
-from .objects import standard
-from .vectors import vector
+from ..core.attributes import Linked
+from .standard_attributes import standard
+from ..core.vectors import vector
 
 
 class box(standard):

@@ -8,7 +8,7 @@ Any other keyword or attribute is the program's own (``ball.p = ...``).
 
 The solids built on it (``sphere``, ``box``, ``helix``, ...) are in :mod:`.solids`,
 ``compound`` in :mod:`.compounds`, ``label`` in :mod:`.labels` and the lights with
-the canvas (:mod:`.canvases`). Nothing here draws: an object only marks itself
+the canvas (:mod:`..core.canvases`). Nothing here draws: an object only marks itself
 changed (``_dirty``); the renderer (:mod:`springscene.vpython.draw.renderer`) reads all
 objects of a kind once per frame.
 """
@@ -17,13 +17,13 @@ from __future__ import annotations
 
 import math
 
-from . import runtime
-from .attributes import Linked
-from .base import _Base
-from .checks import _vec, one_of
+from ..core import runtime
+from ..core.attributes import Linked
+from .base import _Base, component
+from ..core.checks import _vec, one_of
 from .curves import curve, points
 from .shared_defaults import Default, compact, default, seed_keys, stored
-from .vectors import is_lenient, vector
+from ..core.vectors import is_lenient, vector
 
 
 def _turned(other: vector, old: vector, new: vector) -> vector | None:
@@ -358,15 +358,10 @@ class standard(_Base):
 
     color = Linked(_vec, dirty=True, live=True)
 
-    red = property(lambda self: self._color.x,
-                   lambda self, v: setattr(self, "color", vector(v, self._color.y, self._color.z)))
-    green = property(lambda self: self._color.y,
-                     lambda self, v: setattr(self, "color", vector(self._color.x, v, self._color.z)))
-    blue = property(lambda self: self._color.z,
-                    lambda self, v: setattr(self, "color", vector(self._color.x, self._color.y, v)))
+    red, green, blue = component("color", 0), component("color", 1), component("color", 2)
 
     x, y, z = _PosShortcut("x"), _PosShortcut("y"), _PosShortcut("z")
-    texture = bumpmap = None          # none until given (:mod:`.texturing` reads them)
+    texture = bumpmap = None          # none until given (:mod:`..api.texturing` reads them)
 
     @property
     def material(self):

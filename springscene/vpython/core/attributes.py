@@ -53,7 +53,7 @@ class Linked:
         A vector's own component: a change calls the hook its owner put in the vector's
         ``_on_change``, if any.
     live
-        A vector read as a program gets it (:meth:`.objects.standard._live`): the
+        A vector read as a program gets it (:meth:`..objects.standard_attributes.standard._live`): the
         object's own, copied from a shared default first, hooked on the first read.
     get, set
         The attribute's read or write, when it is its own (a default read from the

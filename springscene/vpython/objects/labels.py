@@ -7,10 +7,10 @@ GlowScript's 2D overlay does (:meth:`..draw.renderer.Renderer._sync_labels`).
 
 from __future__ import annotations
 
-from .attributes import Linked
+from ..core.attributes import Linked
 from .base import _Base
-from .checks import _vec
-from .vectors import vector
+from ..core.checks import _vec
+from ..core.vectors import vector
 
 
 class label(_Base):

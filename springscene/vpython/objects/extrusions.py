@@ -36,9 +36,9 @@ from typing import NamedTuple
 import mapbox_earcut
 import numpy as np
 
-from .checks import _vec
+from ..core.checks import _vec
 from .compounds import Surface, bounding_size, fused
-from .vectors import vector
+from ..core.vectors import vector
 
 SMOOTH = 0.95            # cosine of the largest turn still drawn smooth (18 degrees)
 _TINY = 1e-12
