@@ -1,0 +1,336 @@
+"""A recording (docs/recording.md) as the interactive page's data: timelines to seek in.
+
+The recording says, frame by frame, what changed. The page must show any frame at once,
+backwards too, so :func:`replay_data` turns it around: one **timeline** per (object,
+attribute), the frames where the value changed and the values, which the player
+(``vpython/data/player.js``) searches with a binary search; curves' and points' points and
+graphs' series as **segments** (a ``reset`` starts one; appends add to its end, ``drop``
+removes from its front) with, at each frame they changed, which segment and which slice of
+it is shown.
+
+Compactness: every number of a numeric timeline (a vector or a number at every value) is
+stored as a little-endian float32 in one buffer, and the frames of a timeline that changed
+at every frame from its first are stored as that first frame alone, others' frames as
+int32 in a second buffer; both go into the page as base64. float32 keeps 7 significant
+digits, what WebGL draws with. Canvases (the camera), strings, booleans and values that
+may be null are JSON, the program's own numbers as Python wrote them.
+"""
+
+from __future__ import annotations
+
+import base64
+import gzip
+import html
+import json
+import re
+import sys
+from array import array
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any, Iterator
+
+from .safe_html import sanitize
+
+__all__ = ["replay_data", "frames_of", "DRAWN_KINDS"]
+
+# kinds the player draws with GlowScript's own constructor
+DRAWN_KINDS = frozenset("box sphere simple_sphere ellipsoid cylinder cone pyramid arrow helix "
+                        "ring curve points label".split())
+_POINT_WIDTH = 7                      # x, y, z, r, g, b, radius
+_SERIES_WIDTH = 2                     # x, y
+_PRINTED_LIMIT = 1 << 20              # characters of printed text kept in the page
+_TEXTURES = "vpython/data/vpython_textures"
+_TAG = re.compile(r"<[^>]*>")
+
+
+def frames_of(path: str | Path) -> Iterator[dict]:
+    """Each JSON line of a recording (``.gz`` read through gzip): header, frames, end."""
+    path = Path(path)
+    opener = gzip.open if path.suffix == ".gz" else open
+    with opener(path, "rt", encoding="utf-8") as f:
+        for line in f:
+            if line.strip():
+                try:
+                    yield json.loads(line)
+                except json.JSONDecodeError:     # a run killed mid-line: the frames before
+                    return
+
+
+@dataclass
+class _Buffers:
+    floats: array = field(default_factory=lambda: array("f"))
+    ints: array = field(default_factory=lambda: array("i"))
+
+    def add_floats(self, values) -> int:
+        at = len(self.floats)
+        self.floats.extend(values)
+        return at
+
+    def add_ints(self, values) -> int:
+        at = len(self.ints)
+        self.ints.extend(values)
+        return at
+
+    def encoded(self) -> dict[str, str]:
+        out = {}
+        for name, arr in (("f32", self.floats), ("i32", self.ints)):
+            if sys.byteorder == "big":
+                arr = array(arr.typecode, arr)
+                arr.byteswap()
+            out[name] = base64.b64encode(arr.tobytes()).decode("ascii")
+        return out
+
+
+@dataclass
+class _Segments:
+    """A list of points (curve, points, a graph's series) over time, as segments."""
+
+    width: int
+    segments: list[list[float]] = field(default_factory=list)
+    states: list[tuple[int, int, int, int]] = field(default_factory=list)  # frame, seg, a, b
+
+    def change(self, frame: int, reset=None, drop: int = 0, append=()) -> None:
+        seg, start, end = (self.states[-1][1:] if self.states else (-1, 0, 0))
+        if reset is not None or seg < 0:
+            self.segments.append([])
+            seg, start, end = len(self.segments) - 1, 0, 0
+            append = list(reset or ()) + list(append)
+        start = min(start + max(int(drop), 0), end)
+        for p in append:
+            self.segments[seg].extend(_row(p, self.width))
+        end = len(self.segments[seg]) // self.width
+        state = (frame, seg, start, end)
+        if self.states and self.states[-1][0] == frame:
+            self.states[-1] = state
+        else:
+            self.states.append(state)
+
+    def encoded(self, buf: _Buffers) -> list[Any]:
+        offsets = [buf.add_floats(s) for s in self.segments]
+        flat = [v for s in self.states for v in s]
+        return [offsets, buf.add_ints(flat), len(self.states)]
+
+
+def _row(p, width: int) -> list[float]:
+    """A point as ``width`` floats (missing or null values as 0)."""
+    row = [float(v) if isinstance(v, (int, float)) else 0.0 for v in list(p)[:width]]
+    return row + [0.0] * (width - len(row))
+
+
+@dataclass
+class _Object:
+    id: int
+    kind: str
+    canvas: int
+    born: int
+    died: int | None = None
+    attrs: dict[str, list[tuple[int, Any]]] = field(default_factory=dict)
+    points: _Segments | None = None
+
+    def set(self, frame: int, name: str, value: Any) -> None:
+        timeline = self.attrs.setdefault(name, [])
+        if timeline and timeline[-1][0] == frame:
+            timeline[-1] = (frame, value)
+        elif not timeline or timeline[-1][1] != value:
+            timeline.append((frame, value))
+
+    def encoded(self, buf: _Buffers) -> dict[str, Any]:
+        numeric, other = {}, {}
+        for name, timeline in self.attrs.items():
+            dim = _numeric_dim([v for _, v in timeline])
+            if dim:
+                numeric[name] = _numeric_timeline(timeline, dim, buf)
+            else:
+                other[name] = [[f, v] for f, v in timeline]
+        out = {"id": self.id, "kind": self.kind, "canvas": self.canvas, "born": self.born,
+               "died": self.died, "n": numeric, "j": other}
+        if self.points is not None:
+            out["p"] = self.points.encoded(buf)
+        return out
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _numeric_dim(values: list) -> int:
+    """3 if every value is a vector, 1 if every one is a number, else 0 (kept as JSON)."""
+    if all(_is_number(v) for v in values):
+        return 1
+    if all(isinstance(v, list) and len(v) == 3 and all(map(_is_number, v)) for v in values):
+        return 3
+    return 0
+
+
+def _numeric_timeline(timeline, dim: int, buf: _Buffers) -> list[int]:
+    """[dim, float offset, count, dense, first frame or int offset] (module docstring)."""
+    frames = [f for f, _ in timeline]
+    flat = [float(x) for _, v in timeline for x in ([v] if dim == 1 else v)]
+    at = buf.add_floats(flat)
+    if frames == list(range(frames[0], frames[0] + len(frames))):
+        return [dim, at, len(frames), 1, frames[0]]
+    return [dim, at, len(frames), 0, buf.add_ints(frames)]
+
+
+@dataclass
+class _Replay:
+    """The recording read through once, gathered per object, canvas and graph."""
+
+    header: dict = field(default_factory=dict)
+    times: list[float] = field(default_factory=list)
+    objects: dict[int, _Object] = field(default_factory=dict)
+    canvases: dict[int, dict[str, list]] = field(default_factory=dict)
+    graphs: list[dict] = field(default_factory=list)
+    series: dict[int, dict] = field(default_factory=dict)
+    series_points: dict[int, _Segments] = field(default_factory=dict)
+    printed: list[str] = field(default_factory=list)
+    printed_at: list[list[int]] = field(default_factory=list)
+    printed_len: int = 0
+    end: dict | None = None
+
+    def frame(self, rec: dict) -> None:
+        k = len(self.times)
+        self.times.append(float(rec.get("t", k / max(self.header.get("fps", 25), 1))))
+        for c in rec.get("canvases") or ():
+            self._canvas(k, c)
+        for o in rec.get("new") or ():
+            self._new(k, o)
+        for name, change in (rec.get("set") or {}).items():
+            self._set(k, name, change)
+        for oid, change in (rec.get("points") or {}).items():
+            obj = self.objects.get(int(oid))
+            if obj is not None:
+                obj.points = obj.points or _Segments(_POINT_WIDTH)
+                obj.points.change(k, change.get("reset"), change.get("drop", 0),
+                                  change.get("append") or ())
+        for oid in rec.get("deleted") or ():
+            if int(oid) in self.objects:
+                self.objects[int(oid)].died = k
+        self._graphs(k, rec.get("graphs") or {})
+        self._printed(k, rec.get("printed") or "")
+
+    def _canvas(self, k: int, c: dict) -> None:
+        timelines = self.canvases.setdefault(int(c["id"]), {})
+        for name, value in c.items():
+            if name == "id":
+                continue
+            if name in ("title", "caption") and value is not None:
+                value = sanitize(value)
+            timeline = timelines.setdefault(name, [])
+            if timeline and timeline[-1][0] == k:
+                timeline[-1] = [k, value]
+            elif not timeline or timeline[-1][1] != value:
+                timeline.append([k, value])
+
+    def _new(self, k: int, o: dict) -> None:
+        obj = _Object(int(o["id"]), str(o.get("kind", "")), int(o.get("canvas", 0)), k)
+        self.objects[obj.id] = obj
+        for name, value in o.items():
+            if name in ("id", "kind", "canvas"):
+                continue
+            if name == "points" and obj.kind in ("curve", "points"):
+                obj.points = _Segments(_POINT_WIDTH)
+                obj.points.change(k, reset=value or [])
+            else:
+                obj.set(k, name, value)
+
+    def _set(self, k: int, name: str, change: dict) -> None:
+        ids, values = change.get("ids") or [], change.get("values") or []
+        dim = 3 if ids and len(values) == 3 * len(ids) else 1
+        for i, oid in enumerate(ids):
+            obj = self.objects.get(int(oid))
+            if obj is not None:
+                value = values[3 * i:3 * i + 3] if dim == 3 else values[i]
+                obj.set(k, name, value)
+
+    def _graphs(self, k: int, g: dict) -> None:
+        for item in g.get("new") or ():
+            if item.get("kind") == "graph":
+                self.graphs.append({key: _graph_value(key, v) for key, v in item.items()})
+            else:
+                self.series[int(item["id"])] = {key: _graph_value(key, v)
+                                                for key, v in item.items()}
+        for sid, flat in (g.get("reset") or {}).items():
+            self._series(int(sid)).change(k, reset=_pairs(flat))
+        for sid, flat in (g.get("data") or {}).items():
+            self._series(int(sid)).change(k, append=_pairs(flat))
+
+    def _series(self, sid: int) -> _Segments:
+        return self.series_points.setdefault(sid, _Segments(_SERIES_WIDTH))
+
+    def _printed(self, k: int, text: str) -> None:
+        if not text or self.printed_len >= _PRINTED_LIMIT:
+            return
+        text = text[:_PRINTED_LIMIT - self.printed_len]
+        self.printed.append(text)
+        self.printed_len += len(text)
+        self.printed_at.append([k, self.printed_len])
+
+
+def _graph_value(key: str, value: Any) -> Any:
+    """A graph's or series' value, titles and labels as plain text (no markup)."""
+    if key in ("title", "xtitle", "ytitle", "label") and isinstance(value, str):
+        return _plain(value)
+    return value
+
+
+def _plain(markup: str) -> str:
+    """The text of ``markup``: tags dropped, entities read (shown as text, never HTML)."""
+    return html.unescape(_TAG.sub("", sanitize(markup)))
+
+
+def _pairs(flat) -> list[list[float]]:
+    flat = list(flat or ())
+    return [flat[i:i + 2] for i in range(0, len(flat) - 1, 2)]
+
+
+def _texture_urls(objects: dict[int, _Object]) -> dict[str, str]:
+    """VPython's own textures that objects use, as data: URLs (no file beside the page)."""
+    urls = {}
+    folder = resources.files("springscene").joinpath(_TEXTURES)
+    for obj in objects.values():
+        for _, name in obj.attrs.get("texture", ()):
+            if isinstance(name, str) and name not in urls:
+                f = folder.joinpath(f"{name}_texture.jpg")
+                if f.is_file():
+                    urls[name] = ("data:image/jpeg;base64,"
+                                  + base64.b64encode(f.read_bytes()).decode("ascii"))
+    return urls
+
+
+def replay_data(path: str | Path) -> dict[str, Any]:
+    """The page's data for the recording at ``path`` (module docstring), as JSON values."""
+    replay = _Replay()
+    for rec in frames_of(path):
+        if "format" in rec:
+            replay.header = rec
+        elif "end" in rec:
+            replay.end = rec["end"]
+        elif "frame" in rec:
+            replay.frame(rec)
+    buf = _Buffers()
+    objects = [o.encoded(buf) for o in sorted(replay.objects.values(), key=lambda o: o.id)]
+    series = [{**s, "p": replay._series(sid).encoded(buf)}
+              for sid, s in sorted(replay.series.items())]
+    left_out: dict[str, int] = {}
+    for o in replay.objects.values():
+        if o.kind not in DRAWN_KINDS:
+            left_out[o.kind] = left_out.get(o.kind, 0) + 1
+    return {
+        "header": {k: replay.header.get(k) for k in ("program", "dialect", "fps",
+                                                     "springscene", "version")},
+        "times": replay.times, "end": _end(replay.end),
+        "canvases": [{"id": cid, "t": tl} for cid, tl in sorted(replay.canvases.items())],
+        "objects": objects, "graphs": replay.graphs, "series": series,
+        "printed": "".join(replay.printed), "printed_at": replay.printed_at,
+        "textures": _texture_urls(replay.objects), "left_out": left_out,
+        **buf.encoded(),
+    }
+
+
+def _end(end: dict | None) -> dict | None:
+    """The end line's summary (its names and globals are for readers, not the page)."""
+    if end is None:
+        return None
+    return {k: end.get(k) for k in ("t", "frames", "ended", "error")}
