@@ -9,6 +9,7 @@
    window.springscene is the player, for the page's tests. */
 (function () {
   "use strict";
+  var started = performance.now();
   var data = JSON.parse(document.getElementById("springscene-recording").textContent);
   var page = document.getElementById("vp-page");
   window.__GSlang = "vpython";
@@ -407,5 +408,14 @@
   }
   show(0);
   api.ready = true;
-  if (!/[#&]paused\b/.test(location.hash)) play();
+  api.setup_ms = performance.now() - started;
+  // playing starts when GlowScript has drawn the first frame (its meshes made), as VPython's
+  // program starts when its page is up
+  var first = canvasList[0].glow;
+  function firstDrawn() {
+    first.unbind("draw_complete", firstDrawn);
+    api.first_drawn_ms = performance.now() - started;
+    if (!/[#&]paused\b/.test(location.hash) && !state.playing && state.frame === 0) play();
+  }
+  first.bind("draw_complete", firstDrawn);
 })();

@@ -1,0 +1,253 @@
+"""The interactive page (springscene.vpython.page.interactive): a recording replayed by
+GlowScript's own library in one HTML file, opened from the disk in headless Chromium.
+
+The recordings are written in the documented format (tests/vpython/recordings.py). The
+browser tests are marked slow (a Chromium each module, WebGL in software on 2 cores).
+"""
+
+from __future__ import annotations
+
+import errno
+import math
+import re
+import subprocess
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import recordings
+from browser import Browser, require_chromium
+from springscene.errors import OutputError
+from springscene.vpython.page import glow_library
+from springscene.vpython.page.interactive import write_interactive_page
+from springscene.vpython.page.replay_data import replay_data
+from springscene.vpython.page.safe_html import sanitize
+
+MB = 1 << 20
+INJECTION = "</script><script>window.pwned=1</script><!--"
+
+
+@pytest.fixture(scope="module")
+def glow():
+    """GlowScript's library (`make setup` caches it; the tests need no network)."""
+    try:
+        return glow_library.library()
+    except OutputError as e:
+        pytest.skip(str(e))
+
+
+@pytest.fixture(scope="module")
+def browser(glow):
+    require_chromium()
+    b = Browser()
+    yield b
+    b.close()
+
+
+@pytest.fixture(scope="module")
+def spring_page(tmp_path_factory, glow):
+    folder = tmp_path_factory.mktemp("spring")
+    rec = recordings.spring(folder / "spring.jsonl", seconds=4.0)
+    return write_interactive_page(rec, folder / "spring.html", video=folder / "spring.mp4")
+
+
+# ---- the file ------------------------------------------------------------------------
+
+def test_the_page_is_one_file_that_fetches_nothing(spring_page):
+    text = spring_page.read_text(encoding="utf-8")
+    assert not re.search(r"<(script|img|link|iframe)[^>]*\s(src|href)=", text, re.I)
+    assert "Copyright (C) 2015 by John Coady, Ruth Chabay, and Bruce Sherwood" in text
+    assert 'href="spring.mp4"' in text          # the video, beside the page
+    # five script elements and the data's: nothing in them ended one early
+    assert text.count("</script>") == 5
+
+
+def test_the_atomic_solid_page_is_at_most_5_mb(tmp_path, glow):
+    rec = recordings.crystal(tmp_path / "crystal.jsonl", seconds=10.0)
+    page = write_interactive_page(rec, tmp_path / "crystal.html")
+    size = page.stat().st_size
+    print(f"AtomicSolid-like page (64 spheres, 144 helices, 10 s at 25 fps): "
+          f"{size / MB:.2f} MiB, recording {rec.stat().st_size / MB:.2f} MiB")
+    assert size <= 5 * MB
+
+
+def test_timelines_keep_the_changes_and_dense_ones_keep_no_frames(tmp_path):
+    rec = recordings.spring(tmp_path / "s.jsonl", seconds=1.0)
+    data = replay_data(rec)
+    ball = next(o for o in data["objects"] if o["id"] == 3)
+    dim, _, count, dense, first = ball["n"]["pos"]
+    assert (dim, count, dense, first) == (3, 26, 1, 0)
+    assert "pos" not in next(o for o in data["objects"] if o["id"] == 1)["n"] or \
+        next(o for o in data["objects"] if o["id"] == 1)["n"]["pos"][2] == 1
+    assert len(data["times"]) == 26 and data["times"][25] == 1.0
+
+
+def test_a_recording_cut_short_gives_its_whole_frames(tmp_path, glow):
+    rec = recordings.spring(tmp_path / "s.jsonl", seconds=1.0)
+    lines = rec.read_text().splitlines()
+    cut = tmp_path / "cut.jsonl"
+    cut.write_text("\n".join(lines[:11]) + "\n" + lines[11][:40])
+    assert len(replay_data(cut)["times"]) == 10
+    assert write_interactive_page(cut, tmp_path / "cut.html").stat().st_size > 0
+
+
+# ---- titles and captions --------------------------------------------------------------
+
+@pytest.mark.parametrize("markup, kept", [
+    ("<b>k</b> = 5<script>alert(1)</script>", "<b>k</b> = 5"),
+    ('<img src=x onerror="alert(1)">t', "t"),
+    ('<a href="javascript:alert(1)">go</a>', "<a>go</a>"),
+    ('<a href="https://vpython.org">vp</a>', '<a href="https://vpython.org">vp</a>'),
+    ('<p style="color: red" onclick="x()">r</p>', '<p style="color: red">r</p>'),
+    ('<p style="background: url(http://x)">u</p>', "<p>u</p>"),
+    ("<svg><script>1</script></svg>x<iframe src=y></iframe>", "x"),
+    ("a < b & c\n  d", "a &lt; b &amp; c\n  d"),
+    ("<!-- x --><!--vpython-widget-3-->", "<!--vpython-widget-3-->"),
+])
+def test_titles_and_captions_keep_formatting_only(markup, kept):
+    assert sanitize(markup) == kept
+
+
+# ---- GlowScript's library -------------------------------------------------------------
+
+def _no_network(monkeypatch, tmp_path):
+    monkeypatch.setenv("SPRINGSCENE_GLOW_DIR", str(tmp_path / "glow"))
+    monkeypatch.setattr(glow_library, "_installed", lambda: None)
+    monkeypatch.setattr(glow_library, "_found", {})
+
+
+def test_no_library_and_no_network_is_one_line_naming_what_to_do(monkeypatch, tmp_path):
+    _no_network(monkeypatch, tmp_path)
+
+    def pip_without_network(cmd, **kw):
+        return subprocess.CompletedProcess(cmd, 1, "", "ERROR: Could not find a version "
+                                           "that satisfies the requirement vpython==7.6.5")
+    monkeypatch.setattr(glow_library.subprocess, "run", pip_without_network)
+    rec = recordings.spring(tmp_path / "s.jsonl", seconds=0.2)
+    with pytest.raises(OutputError) as raised:
+        write_interactive_page(rec, tmp_path / "s.html")
+    message = str(raised.value)
+    assert "\n" not in message and raised.value.errno == errno.ENETUNREACH
+    assert "SPRINGSCENE_GLOW_DIR" in message and "pip download vpython==7.6.5" in message
+    assert message.endswith(f"writing {tmp_path / 's.html'}")
+    assert not (tmp_path / "s.html").exists()
+
+
+def test_a_wheel_put_in_the_cache_is_enough(monkeypatch, tmp_path, glow):
+    _no_network(monkeypatch, tmp_path)
+    folder = tmp_path / "glow"
+    folder.mkdir()
+    with zipfile.ZipFile(folder / "vpython-7.6.5-cp311-none-any.whl", "w") as z:
+        for name, member in glow_library._IN_WHEEL.items():
+            z.writestr(member, (glow.folder / name).read_bytes()
+                       if name != "LICENSE.txt" else glow.license_text.encode())
+    found = glow_library.library()
+    assert found.folder == folder and found.glow_js == glow.glow_js
+    assert sorted(p.name for p in folder.iterdir() if not p.suffix == ".whl") == \
+        sorted(glow_library.FILES)
+
+
+def test_a_changed_file_in_the_cache_is_not_used(monkeypatch, tmp_path, glow):
+    _no_network(monkeypatch, tmp_path)
+    folder = tmp_path / "glow"
+    folder.mkdir()
+    for name in glow_library.FILES:
+        src = glow.folder / name if name != "LICENSE.txt" else None
+        (folder / name).write_bytes(src.read_bytes() if src else glow.license_text.encode())
+    (folder / "glow.min.js").write_text("window.pwned = 1;")
+    assert glow_library._cached() is None
+
+
+# ---- in the browser -------------------------------------------------------------------
+
+def _ball_y(k: int) -> float:
+    return recordings.spring_position(k)[1]
+
+
+@pytest.mark.slow
+def test_the_page_draws_from_the_disk_with_no_network(browser, spring_page):
+    browser.open(spring_page)
+    assert browser.js("return performance.getEntriesByType('resource').length") == 0
+    picture = browser.canvas_picture()
+    assert picture.shape == (400, 640, 3)
+    lit = picture.max(axis=2) > 40                 # the objects on the black background
+    assert 0.005 < lit.mean() < 0.5
+    # the ball (blue) where the recording has it at frame 0
+    blue = (picture[..., 2] > 150) & (picture[..., 0] < 80)
+    assert blue.sum() > 100
+    assert browser.js("return window.springscene.object(3).pos.y") == pytest.approx(_ball_y(0))
+
+
+@pytest.mark.slow
+def test_nothing_the_program_wrote_runs(browser, tmp_path):
+    rec = recordings.spring(
+        tmp_path / "evil.jsonl", seconds=0.4,
+        title='<img src=x onerror="window.pwned=2"><b>bold</b>' + INJECTION,
+        caption='<script>window.pwned=3</script><i onclick="window.pwned=4">it</i>',
+        label_text=INJECTION, printed=INJECTION + "\n")
+    text = rec.read_text()
+    text = text.replace('"title": "y(t)"', '"title": ' + repr(INJECTION).replace("'", '"'))
+    rec.write_text(text)
+    page = write_interactive_page(rec, tmp_path / "evil.html")
+    browser.open(page)
+    browser.js("window.springscene.seek(5)")
+    assert browser.js("return window.pwned") is None
+    printed = browser.js("return document.querySelector('.vp-print').textContent")
+    assert INJECTION in printed
+    title = browser.js("return window.springscene.canvas(0).title_anchor[0].innerHTML")
+    assert "<b>bold</b>" in title and "<img" not in title and "<script" not in title
+    caption = browser.js("return window.springscene.canvas(0).caption_anchor[0].innerHTML")
+    assert caption == "<i>it</i>"
+    assert browser.js("return window.springscene.object(5).text") == INJECTION
+
+
+@pytest.mark.slow
+def test_seeking_shows_the_recordings_values_backwards_too_and_fast(browser, spring_page):
+    browser.open(spring_page)
+    timings = []
+    for k in (80, 3, 100, 57, 0, 99, 21, 20, 64, 1):
+        timings.append(browser.js("return window.springscene.seek(arguments[0])", k))
+        got = browser.js("""var s = window.springscene, b = s.object(3), h = s.object(2),
+                            c = s.object(4);
+                            return [s.frame(), b.pos.x, b.pos.y, b.pos.z, h.axis.y, h.size.x,
+                                    c.npoints, c.point(c.npoints - 1).pos.y,
+                                    s.canvas(0).range]""", k)
+        y = _ball_y(k)
+        assert got[0] == k
+        assert got[1:4] == pytest.approx([0.0, y, 0.0], abs=1e-6)
+        assert got[4] == pytest.approx(y - 0.05, abs=1e-6)
+        assert got[5] == pytest.approx(abs(y - 0.05), abs=1e-6)
+        assert got[6] == min(k + 1, 20)             # the trail: retain 20, dropped in front
+        assert got[7] == pytest.approx(y, abs=1e-6)
+        assert got[8] == pytest.approx(0.8 + 0.001 * k if k else 0.8)
+    print(f"seek: max {max(timings):.1f} ms, mean {np.mean(timings):.1f} ms")
+    assert max(timings) <= 100
+
+
+@pytest.mark.slow
+def test_the_users_camera_stays_until_follow(browser, spring_page):
+    browser.open(spring_page)
+    browser.js("window.springscene.seek(10)")
+    assert browser.js("return window.springscene.user_camera(0)") is False
+    browser.js("window.springscene.canvas(0).__range = 3")    # as GlowScript's mouse wheel
+    browser.js("window.springscene.seek(30)")
+    assert browser.js("return window.springscene.user_camera(0)") is True
+    assert browser.js("return window.springscene.canvas(0).range") == 3
+    browser.js("window.springscene.follow()")
+    assert browser.js("return window.springscene.canvas(0).range") == pytest.approx(0.83)
+
+
+@pytest.mark.slow
+def test_ten_seconds_play_in_ten_seconds(browser, tmp_path):
+    rec = recordings.spring(tmp_path / "ten.jsonl", seconds=10.0)
+    page = write_interactive_page(rec, tmp_path / "ten.html")
+    browser.open(page)
+    browser.js("window.springscene.play()")
+    playback = browser.wait("return window.springscene.playback", 20)
+    print(f"10 s played in {playback['wall_s']:.3f} s of wall clock, "
+          f"{playback['frames_shown']} of {playback['frames']} frames shown")
+    assert playback["program_s"] == pytest.approx(10.0)
+    assert abs(playback["wall_s"] - 10.0) <= 0.5
+    assert browser.js("return window.springscene.frame()") == 250
