@@ -5,7 +5,7 @@ BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 WIKI   := configs/wiki.toml
 
-.PHONY: setup render figures matter test test-fast lint bench baselines clean system-deps fidelity
+.PHONY: setup render figures matter test test-fast lint bench baselines clean system-deps system-deps-chromium fidelity glow
 
 # Which Python made the .venv, and which one $(PYTHON) is: a .venv made by another (a run
 # with an older or newer Python, or one whose Python has gone) is removed and made afresh.
@@ -40,7 +40,30 @@ system-deps:
 	  else echo "libosmesa6 not installed: OSMesa tests will skip"; fi; \
 	fi
 
-setup: $(STAMP) system-deps
+# Headless Chromium (Debian's chromium and chromium-driver) opens the interactive page in
+# its tests (tests/vpython/test_interactive_page.py) and draws real VPython (make fidelity):
+# installed when missing and apt-get can run as root; otherwise those tests skip (CI, with
+# SPRINGSCENE_REQUIRE_BACKENDS=1, fails instead).
+system-deps-chromium:
+	@if ! command -v chromium >/dev/null || [ ! -x /usr/bin/chromedriver ]; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing chromium and chromium-driver"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+	      chromium chromium-driver >/dev/null) \
+	      || echo "could not install chromium: the interactive page's browser tests will skip"; \
+	  else echo "chromium and chromium-driver are missing: the interactive page's browser" \
+	    "tests will skip"; fi; \
+	fi
+
+# GlowScript's library (VPython 7.6.5's glow.min.js, jQuery, jQuery UI and the MIT licence)
+# for the interactive page, fetched once into the cache (pip download of the vpython wheel,
+# checked by SHA-256), so the tests and later runs need no network; README "The interactive
+# page"
+glow: $(STAMP)
+	@$(BIN)/python -c 'from springscene.vpython.page import glow_library as g; \
+	  print("GlowScript library:", g.library().folder)'
+
+setup: $(STAMP) system-deps system-deps-chromium glow
 
 render: setup
 	@mkdir -p renders/wiki
@@ -102,14 +125,6 @@ $(FIDELITY_VENV)/.installed:
 	touch $@
 
 fidelity: setup $(FIDELITY_VENV)/.installed
-	@if ! command -v chromium >/dev/null || [ ! -x /usr/bin/chromedriver ]; then \
-	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
-	    echo "installing chromium and chromium-driver"; \
-	    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
-	      chromium chromium-driver >/dev/null; \
-	  else echo "chromium and chromium-driver are missing: real VPython can only be read" \
-	    "from tests/baselines/fidelity/"; fi; \
-	fi
 	$(BIN)/python benchmarks/fidelity/run.py --python $(FIDELITY_VENV)/bin/python $(FIDELITY_ARGS)
 
 clean:
