@@ -8,11 +8,9 @@ browser tests are marked slow (a Chromium each module, WebGL in software on 2 co
 from __future__ import annotations
 
 import errno
-import math
 import re
 import subprocess
 import zipfile
-from pathlib import Path
 
 import numpy as np
 import pytest
