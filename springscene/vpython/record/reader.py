@@ -12,6 +12,7 @@ An attribute's array over all objects is made the first time any object's is ask
 
 from __future__ import annotations
 
+import base64
 import bisect
 import gzip
 import json
@@ -24,7 +25,7 @@ import numpy as np
 from ...errors import UserError
 from .recorder import FORMAT, VERSION
 
-__all__ = ["read", "Recording", "Track", "Series", "Snapshot"]
+__all__ = ["read", "numbers", "Recording", "Track", "Series", "Snapshot"]
 
 
 def _lines(path: Path) -> Iterator[dict]:
@@ -43,6 +44,14 @@ def _lines(path: Path) -> Iterator[dict]:
     except (OSError, EOFError) as exc:
         raise UserError(f"{path}: cannot read the recording "
                         f"({getattr(exc, 'strerror', None) or exc})") from None
+
+
+def numbers(change: dict) -> np.ndarray:
+    """A ``set`` entry's values as floats: ``f8`` (base64 of little-endian float64s) or a
+    JSON list (booleans; null as NaN)."""
+    if "f8" in change:
+        return np.frombuffer(base64.b64decode(change["f8"]), dtype="<f8").astype(float)
+    return np.array([np.nan if v is None else v for v in change["values"]], dtype=float)
 
 
 @dataclass
@@ -308,8 +317,7 @@ class Recording:
                 change = pending[1].get(attribute)
                 if change is not None:
                     slots = [self._slot[i] for i in change["ids"]]
-                    vals = np.array([np.nan if v is None else v for v in change["values"]],
-                                    dtype=float)
+                    vals = numbers(change)
                     cur[slots] = vals.reshape(len(slots), width)
                 pending = next(sets, None)
             for tr in gone.get(f, ()):
@@ -327,7 +335,7 @@ class Recording:
         for _, sets in self._sets:
             change = sets.get(attribute)
             if change is not None:
-                values = change["values"]
+                values = numbers(change).tolist() if "f8" in change else change["values"]
                 width = len(values) // max(len(change["ids"]), 1)
                 found = next((v for v in values if v is not None), None)
                 if found is not None:
