@@ -18,6 +18,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+from springscene.view import backend  # noqa: E402
 from springscene.vpython.run.options import RunOptions  # noqa: E402
 from springscene.vpython.run.runner import run_program  # noqa: E402
 
@@ -54,8 +55,6 @@ def _run(program: Path, out: Path, record: Path | None = None) -> float:
 
 
 def main() -> None:
-    from springscene.view import backend
-
     backend.select("auto")
     with tempfile.TemporaryDirectory() as tmp:
         tmp = Path(tmp)
