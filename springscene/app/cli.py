@@ -148,7 +148,8 @@ def _add_vpython_command(sub) -> None:
     s.add_argument("program", help="a VPython program: VPython 7 (from vpython import *), "
                    "VPython 6 (from visual import *) or Web VPython (GlowScript header)")
     s.add_argument("--out", required=True,
-                   help="video.mp4, .webm, .ogv, .gif, or still.png")
+                   help="video.mp4, .webm, .ogv, .gif, still.png, or run.jsonl (the "
+                   "recording alone: docs/recording.md)")
     length = s.add_mutually_exclusive_group()
     length.add_argument("--duration", type=float,
                         help="program seconds to film (default 10, or until the program ends)")
@@ -160,6 +161,9 @@ def _add_vpython_command(sub) -> None:
                    help="the first canvas alone at its own size (what scene.capture saves), "
                    "not the page (title, canvases, captions, graphs)")
     s.add_argument("--no-page", action="store_true", help="write no OUT.html page")
+    s.add_argument("--record", metavar="FILE",
+                   help="also keep the run as data: each object, camera, graph and printed "
+                   "line at each frame, in FILE (.jsonl or .jsonl.gz; docs/recording.md)")
     s.add_argument("--quiet", action="store_true", help="no summary line")
     s.add_argument("--timeout", type=float, metavar="S",
                    help="stop the program after S seconds of wall clock (exit 124)")
@@ -293,7 +297,7 @@ def _vpython(args: argparse.Namespace) -> int:
                               frames=args.frames, fps=args.fps, backend=args.backend,
                               antialias=not args.draft, overlays=overlays,
                               page=not args.no_page, canvas_only=args.canvas_only,
-                              quality=args.quality, lod=args.lod,
+                              quality=args.quality, lod=args.lod, record=args.record,
                               timeout=args.timeout, max_memory=args.max_memory,
                               on_dialect=lambda d: print(f"springscene: {args.program}: "
                                                          f"written for {d.name}",
@@ -308,7 +312,8 @@ def _vpython(args: argparse.Namespace) -> int:
               f"({result.program_seconds:.2f} s of program time, ended by "
               f"{result.ended}) in {result.seconds:.1f} s"
               + (f", peak memory {size_text(result.peak_memory)}" if result.peak_memory else ""))
-        for path in ([result.page] if result.page else []) + result.images:
+        for path in ([result.page] if result.page else []) + result.images + (
+                [result.recording] if result.recording else []):
             print(f"wrote {path}")
     return 0
 

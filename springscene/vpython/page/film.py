@@ -26,14 +26,17 @@ __all__ = ["Film", "Printed"]
 
 class Printed:
     """What the program prints: passed on to the terminal and kept (up to ``limit``
-    characters) for the page, as GlowScript shows it below the canvas."""
+    characters) for the page, as GlowScript shows it below the canvas; ``also(text)``, if
+    given, gets each piece as it is printed."""
 
-    def __init__(self, out, limit: int = 100_000) -> None:
-        self.out, self.limit = out, limit
+    def __init__(self, out, limit: int = 100_000, also=None) -> None:
+        self.out, self.limit, self.also = out, limit, also
         self.parts: list[str] = []
         self.size = 0
 
     def write(self, text: str) -> int:
+        if self.also is not None:             # the recording's own copy, frame by frame
+            self.also(text)
         if self.size < self.limit:
             self.parts.append(text[: self.limit - self.size])
             self.size += len(self.parts[-1])

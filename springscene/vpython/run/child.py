@@ -137,6 +137,7 @@ def _done(reporter: Reporter, result, read: set[str]) -> None:
                   program_seconds=result.program_seconds, ended=result.ended,
                   size=list(result.size) if result.size else None, dialect=result.dialect,
                   page=str(result.page) if result.page else None,
+                  recording=str(result.recording) if result.recording else None,
                   images=list(dict.fromkeys(str(p) for p in result.images)),
                   notes=result.notes)
 

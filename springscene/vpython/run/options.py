@@ -18,7 +18,9 @@ from ...errors import UserError
 from ...outputs import VIDEO_FORMATS, check_output, check_video_fps
 from ..geometry.lod import LevelOfDetail, coarser
 
-FORMATS = VIDEO_FORMATS + (".png",)
+DATA_FORMATS = (".jsonl",)       # outputs that are the run's recording, no picture
+FORMATS = VIDEO_FORMATS + (".png",) + DATA_FORMATS
+RECORD_SUFFIXES = (".jsonl", ".jsonl.gz")
 DEFAULT_FPS = 50
 DEFAULT_DURATION = 10.0          # program seconds, when neither --duration nor --frames
 MAX_FRAMES = 360_000             # two hours at 50 frames/s
@@ -38,7 +40,8 @@ class RunOptions:
     canvas alone rather than the page; ``quality`` of the video encoding; ``lod``: helices
     drawn within ``lod`` pixels of the true curves (None: the default detail; a
     :class:`~..geometry.lod.LevelOfDetail` as it is, such as ``lod.FULL``, VPython's own
-    detail, which benchmarks measure against).
+    detail, which benchmarks measure against); ``record``: a file (``.jsonl`` or
+    ``.jsonl.gz``) to keep the run's recording in (docs/recording.md).
     """
 
     duration: float | None = None
@@ -51,6 +54,7 @@ class RunOptions:
     canvas_only: bool = False
     quality: str = "medium"
     lod: float | LevelOfDetail | None = None
+    record: str | None = None
 
     def level_of_detail(self) -> LevelOfDetail:
         """What the renderers draw with."""
@@ -91,13 +95,29 @@ def check_request(program, out, options: RunOptions) -> Request:
         if name not in OVERLAYS:
             raise UserError(f"--overlay: unknown overlay {name!r} (choose from "
                             f"{', '.join(OVERLAYS)})")
+    _check_record(options.record, out)
     still = out.suffix.lower() == ".png"
     if still and frames is not None:
         raise UserError("--frames: a .png output is one still; leave --frames out")
     budget, limit = _frame_budget(duration, frames, fps)
-    if not still:
+    if not still and out.suffix.lower() not in DATA_FORMATS:
         check_video_fps(out, fps)
     return Request(path, out, still, budget, limit)
+
+
+def _check_record(record, out: Path) -> None:
+    """``--record FILE``: a ``.jsonl`` or ``.jsonl.gz`` file other than the output, in a
+    folder that exists."""
+    if record is None:
+        return
+    path = Path(record)
+    if not str(record).strip() or not path.name.lower().endswith(RECORD_SUFFIXES):
+        raise UserError(f"--record {record}: the recording is a .jsonl or .jsonl.gz file")
+    if out.suffix.lower() in DATA_FORMATS:
+        raise UserError(f"--record {record}: the output {out.name} is the recording already")
+    if os.path.abspath(path) == os.path.abspath(out):
+        raise UserError(f"--record {record}: the same file as --out")
+    check_output(path, (".jsonl", ".gz"), "--record")
 
 
 def check_lod(px) -> None:

@@ -12,6 +12,8 @@ runs this in a child process that owns nothing (:mod:`.supervise`, :mod:`.child`
 
 from __future__ import annotations
 
+import contextlib
+import importlib.metadata
 import os
 import sys
 import time
@@ -33,11 +35,13 @@ from ..draw import autoscale
 from ..page import graph_images
 from ..page.film import Film, Printed
 from ..page.html_page import write_page
-from .options import DEFAULT_DURATION, RunOptions, check_request
+from ..record.recorder import Recorder
+from .options import DATA_FORMATS, DEFAULT_DURATION, RunOptions, check_request
 from .session import ProgramSession
 
 _PACKAGE = Path(__file__).resolve().parents[2]         # springscene itself
 _EXAMPLES = _PACKAGE / "examples"                       # programs it ships: a user's own
+_NONE = object()
 
 
 def _ours(filename: str) -> bool:
@@ -58,6 +62,7 @@ class ProgramResult:
     size: tuple[int, int] | None = None                   # the video's (width, height)
     dialect: str = "VPython 7"                            # what the program was written for
     page: Path | None = None
+    recording: Path | None = None                         # --record's file
     images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
     notes: list[str] = field(default_factory=list)        # what ran without a user
     peak_memory: int | None = None    # bytes, the run's largest resident set (a supervised run)
@@ -123,6 +128,7 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     """
     request = check_request(program, out, options)
     path, out, still = request.program, request.out, request.still
+    data_only = out.suffix.lower() in DATA_FORMATS      # the recording (or its page) alone
     code, dialect = _compile(path)
     if on_dialect is not None:
         on_dialect(dialect)
@@ -130,18 +136,22 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     graph_images.reset()          # the graph figures of an earlier run in this process
     start = time.perf_counter()
     images: list[Path] = []
-    with atomic_path(out) as tmp:
-        film = Film(None if still else tmp, options.fps, options.overlays, options.backend,
-                    options.antialias, on_frame, options.canvas_only, quality=options.quality,
-                    lod=options.level_of_detail())
+    names = _namespace(path, dialect)
+    given = dict(names)
+    with contextlib.ExitStack() as files:
+        tmp = files.enter_context(atomic_path(out))
+        recorder = _recorder(files, path, out, tmp, options, dialect, still, data_only)
+        film = Film(None if still or data_only else tmp, options.fps, options.overlays,
+                    options.backend, options.antialias, on_frame, options.canvas_only,
+                    quality=options.quality, lod=options.level_of_detail())
         # a still only needs the end: the clock runs, no frame is taken on it
         timeline = runtime.Timeline(options.fps, request.budget,
-                                    (lambda: None) if still else film.take)
+                                    _frame_taker(film, recorder, still, data_only, on_frame))
         # at each of VPython's renders: attached trails and arrows move, autoscale widens
         timeline.on_render = lambda: (attachments.update(), autoscale.at_render())
         try:
             ended = _execute(code, path, dialect, timeline, _capturer(out, film, images),
-                             request.limit, film, on_end)
+                             request.limit, film, names, on_end, recorder)
         except BaseException:
             film.close(False)
             raise
@@ -151,19 +161,84 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                 picture = film.still()
                 write_png(tmp, picture)
                 film.size = (picture.shape[1], picture.shape[0])
-            elif film.frames == 0:            # no rate(): the final scene is the video
+            elif film.frames == 0 and not data_only:    # no rate(): the final scene is the video
                 film.take()
+            if recorder is not None and (recorder.frames == 0 or timeline.frames == 0):
+                recorder.take()
         finally:
             film.close(True)
-        result = ProgramResult(out, 1 if still else film.frames, options.fps,
+        frames = (1 if still else recorder.frames if data_only else film.frames)
+        result = ProgramResult(out, frames, options.fps,
                                timeline.seconds, time.perf_counter() - start, ended,
                                size=film.writer.size if film.writer is not None else film.size,
                                dialect=dialect.name)
+        if recorder is not None:
+            recorder.close(_end(recorder, timeline, ended, names, given))
+            if options.record is not None:
+                result.recording = Path(options.record)
+    if data_only:
+        result.notes = widgets.notes() + _timing_notes(timeline, options.fps, ended,
+                                                       options.duration)
+        return result
     result.images = images + _write_extras(out, result, options.page, still,
                                            film.printed.text(), options.canvas_only)
     result.notes = film.notes + widgets.notes() + _timing_notes(timeline, options.fps, ended,
                                                                 options.duration)
     return result
+
+
+def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
+              options: RunOptions, dialect, still: bool, data_only: bool) -> Recorder | None:
+    """The run's recorder, when the run keeps one: the output itself (``.jsonl``) or
+    ``--record``'s file, moved into place whole when the run ends well."""
+    if data_only:
+        target = tmp
+    elif options.record is not None:
+        target = files.enter_context(atomic_path(Path(options.record)))
+    else:
+        return None
+    recorder = Recorder(target, options.fps, path.name, dialect.name, _version())
+    files.callback(recorder.discard)      # closed, if the run ended before close()
+    return recorder
+
+
+def _version() -> str:
+    try:
+        return importlib.metadata.version("springscene")
+    except importlib.metadata.PackageNotFoundError:
+        return ""
+
+
+def _frame_taker(film: Film, recorder: Recorder | None, still: bool, data_only: bool,
+                 on_frame: Callable | None):
+    """What the clock calls at each frame: the video's frame and the recording's (a
+    recording alone tells ``on_frame(index, None)``)."""
+    if recorder is None:
+        return (lambda: None) if still else film.take
+    if still:
+        return recorder.take
+    if data_only:
+        def record() -> None:
+            recorder.take()
+            if on_frame is not None:
+                on_frame(recorder.frames - 1, None)
+        return record
+
+    def take() -> None:
+        film.take()
+        recorder.take()
+    return take
+
+
+def _end(recorder: Recorder, timeline: runtime.Timeline, ended: str, names: dict,
+         given: dict) -> dict:
+    """The recording's end line (docs/recording.md): the program's own globals, not the
+    names VPython gave it (``given``, the namespace it started with, or ``vpython``'s)."""
+    own = {name: v for name, v in names.items()
+           if given.get(name, _NONE) is not v and getattr(vp, name, _NONE) is not v}
+    held, values = recorder.names(own)
+    return {"t": timeline.seconds, "frames": recorder.frames, "ended": ended, "error": None,
+            "names": held, "globals": values}
 
 
 def _timing_notes(timeline: runtime.Timeline, fps: int, ended: str,
@@ -214,16 +289,22 @@ def _compile(path: Path) -> tuple[types.CodeType, compiling.Dialect]:
         raise ProgramError(_user_traceback(exc)) from None
 
 
-def _execute(code: types.CodeType, path: Path, dialect: compiling.Dialect,
-             timeline: runtime.Timeline, capture: Callable, limit: str, film: Film,
-             on_end: Callable | None = None) -> str:
-    """Run the program as ``__main__`` in its :class:`.session.ProgramSession`; how it
-    ended ("program" or ``limit``)."""
+def _namespace(path: Path, dialect: compiling.Dialect) -> dict:
+    """The globals a program runs in as ``__main__``."""
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
              "input": widgets.program_input}
     if dialect.kind == "glowscript":
         names.update(glowscript.names(vp), **compiling.HELPERS)
-    film.printed = Printed(sys.stdout)
+    return names
+
+
+def _execute(code: types.CodeType, path: Path, dialect: compiling.Dialect,
+             timeline: runtime.Timeline, capture: Callable, limit: str, film: Film,
+             names: dict, on_end: Callable | None = None,
+             recorder: Recorder | None = None) -> str:
+    """Run the program as ``__main__`` in its :class:`.session.ProgramSession`, in the
+    globals ``names``; how it ended ("program" or ``limit``)."""
+    film.printed = Printed(sys.stdout, also=recorder.printed if recorder else None)
     with ProgramSession(path, dialect, timeline, capture,
                         lambda cv: film.renderer(cv).sync(), film.printed, on_end):
         return _run(code, names, path, limit)

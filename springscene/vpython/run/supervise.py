@@ -28,6 +28,7 @@ While no frame comes for :data:`STALL_AFTER` s of wall clock, the reason is said
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import errno
 import glob
 import json
@@ -92,11 +93,15 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
     try:
         with _stop_signals():
+            # the child writes every file in the private folder; they move out when whole
+            child_options = options if options.record is None else dataclasses.replace(
+                options, record=str(folder / Path(options.record).name))
             request = {"program": str(path), "out": str(folder / out.name),
-                       "options": options.to_request(),
+                       "options": child_options.to_request(),
                        "parent_thread": threading.get_native_id()}   # (see .lineage)
             report = _supervise(_start(request), watch, on_dialect)
-            return _finish(report, watch, folder, out)
+            return _finish(report, watch, folder, out,
+                           Path(options.record) if options.record is not None else None)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
 
@@ -264,12 +269,13 @@ def _kill(child: subprocess.Popen) -> None:
         child.returncode = -signal.SIGKILL
 
 
-def _finish(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
+def _finish(report: dict, watch: Watch, folder: Path, out: Path,
+            record: Path | None = None) -> ProgramResult:
     """The result when the child reported its files finished (moved into place here);
     otherwise the error that says how the run ended."""
     kind = report.get("kind")
     if kind == "done":
-        return _move(report, watch, folder, out)
+        return _move(report, watch, folder, out, record)
     if kind == "program":
         raise ProgramError(report["message"])
     if kind == "user":
@@ -297,27 +303,36 @@ def _output_error(report: dict, out: Path) -> OutputError:
     return OutputError(reason, out.parent / name, report["errno"] or errno.EIO)
 
 
-def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
-    """The finished files from ``folder`` into ``out``'s folder, the video last."""
+def _move(report: dict, watch: Watch, folder: Path, out: Path,
+          record: Path | None = None) -> ProgramResult:
+    """The finished files from ``folder`` into ``out``'s folder (``--record``'s to its
+    own), the video last."""
     def placed(name: str | None) -> Path | None:
         return None if name is None else out.parent / Path(name).name
 
     # a name captured twice is one file (the last capture); the video's own name last
     images = [p for p in dict.fromkeys(placed(p) for p in report["images"]) if p != out]
     page = placed(report["page"])
-    targets = list(dict.fromkeys(images + ([page] if page else []))) + [out]
+    recording = record if report.get("recording") and record is not None else None
+    sources = {target: folder / target.name for target in images + [out]}
+    if page:
+        sources[page] = folder / page.name
+    if recording is not None:
+        sources[recording] = folder / Path(report["recording"]).name
+    targets = list(dict.fromkeys(images + ([page] if page else [])
+                                 + ([recording] if recording else []))) + [out]
     read = set(report.get("read", ()))
     for target in targets:
         if os.path.realpath(target) in read:
             raise UserError(f"--out {out}: the program read {target.name}; writing there "
                             "would overwrite it (choose another name)")
     for target in targets:
-        if not (folder / target.name).is_file():
+        if not sources[target].is_file():
             raise RunEnded(1, f"springscene: {watch.program}: the run reported "
                               f"{target.name} finished but did not write it")
     with _signals_held():               # all of them in place, or (SIGKILL aside) none
         for target in targets:
-            os.replace(folder / target.name, target)
+            os.replace(sources[target], target)
     notes = list(report["notes"])
     if report.get("threads"):
         notes.append(f"the program left {_threads(report['threads'])} running after its "
@@ -325,7 +340,8 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path) -> ProgramResult:
     return ProgramResult(out, report["frames"], report["fps"], report["program_seconds"],
                          time.monotonic() - watch.start, report["ended"],
                          size=tuple(report["size"]) if report["size"] else None,
-                         dialect=report["dialect"], page=page, images=images, notes=notes,
+                         dialect=report["dialect"], page=page, recording=recording,
+                         images=images, notes=notes,
                          peak_memory=watch.peak)
 
 

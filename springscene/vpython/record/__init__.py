@@ -1,0 +1,2 @@
+"""A run as data: the recording written as a program runs, and read back
+(docs/recording.md)."""

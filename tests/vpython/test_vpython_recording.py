@@ -1,0 +1,279 @@
+"""The recording (docs/recording.md): a run as data, written frame by frame and read back.
+
+The wiki program's ball against the page's own loop; only changes written; curves and
+trails as point lists (retain included); labels, deletions, graphs and printed text; the
+program's names and globals; gzip and a file cut short; bad flags; memory kept bounded.
+"""
+
+from __future__ import annotations
+
+import gzip
+import json
+import re
+import textwrap
+
+import numpy as np
+import pytest
+
+from conftest import ROOT, run_cli
+from springscene import config, render
+from springscene.errors import ProgramError, UserError
+from springscene.vpython.record.reader import numbers, read
+from springscene.vpython.run.options import RunOptions
+from springscene.vpython.run.runner import run_program
+
+EXAMPLES = ROOT / "examples"
+
+
+def write(tmp_path, source: str, name: str = "prog.py"):
+    path = tmp_path / name
+    path.write_text(textwrap.dedent(source))
+    return path
+
+
+def lines(path) -> list[dict]:
+    opener = gzip.open if str(path).endswith(".gz") else open
+    with opener(path, "rt") as fh:
+        return [json.loads(line) for line in fh]
+
+
+def record(tmp_path, program, **options):
+    out = tmp_path / "run.jsonl"
+    result = run_program(program, out, RunOptions(**options))
+    return result, read(out)
+
+
+def test_the_wiki_ball_is_the_page_loop_bit_for_bit(tmp_path):
+    result, rec = record(tmp_path, EXAMPLES / "wiki_spring.py", frames=50)
+    assert (result.frames, result.ended, rec.frames) == (50, "frames", 50)
+    assert np.array_equal(rec.times, np.arange(50) / 50)
+    traj = render.simulate(config.load(WIKI_CONFIG), 1.0)
+    assert np.array_equal(rec["ball"].pos, traj.pos[2 * np.arange(50)])   # exact
+    # the spring is redrawn along ball.pos - holder.pos at every frame
+    assert np.array_equal(rec["spring"].axis, rec["ball"].pos - rec["holder"].pos)
+    assert rec["spring"].kind == "helix" and rec["holder"].kind == "box"
+    assert np.all(rec["spring"].coils == 15)
+    assert rec.globals["k"] == 15 and rec.globals["m"] == 0.1
+    assert np.array_equal(rec.globals["g"], [0, -9.8, 0])
+    assert "sphere" not in rec.globals and "pi" not in rec.globals    # VPython's own names
+    cv = rec.canvases[0]
+    assert (cv["width"], cv["height"], cv["background"]) == (900, 600, [1, 1, 1])
+    assert cv["title"] == "Ball and Spring Model of Matter"
+    snap = rec.at(0.5)
+    assert snap.frame == 25 and np.array_equal(snap["ball"].pos, rec["ball"].pos[25])
+
+
+WIKI_CONFIG = ROOT / "configs" / "wiki.toml"
+
+
+def test_a_video_run_records_the_frames_it_films(tmp_path):
+    seen = []
+
+    def on_frame(i, image):
+        from springscene.vpython.core.canvases import canvas
+        ball = next(o for o in canvas._all[0]._objects if o._kind == "sphere")
+        seen.append(ball.pos.value)
+
+    result = run_program(EXAMPLES / "wiki_spring.py", tmp_path / "w.mp4",
+                         RunOptions(frames=10, fps=25, antialias=False,
+                                    record=str(tmp_path / "w.jsonl.gz")),
+                         on_frame=on_frame)
+    assert result.recording == tmp_path / "w.jsonl.gz" and (tmp_path / "w.mp4").is_file()
+    rec = read(tmp_path / "w.jsonl.gz")
+    assert rec.frames == result.frames == 10
+    assert np.array_equal(rec["ball"].pos, np.array(seen))
+
+
+def test_only_what_changed_is_written(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        a = sphere(pos=vector(-1, 0, 0))
+        b = sphere(pos=vector(1, 0, 0), color=color.red)
+        c = box()
+        for i in range(20):
+            rate(50)
+            a.pos.x += 0.1          # in place
+            if i == 10:
+                c.color = color.green
+    """)
+    run_program(prog, tmp_path / "run.jsonl", RunOptions(fps=50))
+    frames = [line for line in lines(tmp_path / "run.jsonl") if "frame" in line]
+    assert [o["kind"] for o in frames[0]["new"]] == ["sphere", "sphere", "box"]
+    for line in frames[1:]:
+        assert "new" not in line and "canvases" not in line or line.get("canvases")
+        assert set(line["set"]) <= {"pos", "color"}
+        assert line["set"]["pos"]["ids"] == [0]
+        assert numbers(line["set"]["pos"]).shape == (3,)
+    changed_colour = [line["frame"] for line in frames if "color" in line.get("set", {})]
+    assert len(changed_colour) == 1
+    colour = frames[changed_colour[0]]["set"]["color"]
+    assert colour["ids"] == [2] and numbers(colour).tolist() == [0.0, 1.0, 0.0]
+    rec = read(tmp_path / "run.jsonl")
+    assert rec.frames == 20      # frame f is taken at the f-th rate(), after f moves
+    assert np.allclose(rec["a"].pos[:, 0], -1 + 0.1 * np.arange(20))
+
+
+def test_trails_and_curves_are_point_lists(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        ball = sphere(make_trail=True, retain=5)
+        path = curve(pos=[vector(0, 0, 0), vector(1, 0, 0)], color=color.blue)
+        for i in range(30):
+            rate(25)
+            ball.pos = vector(i * 0.1, (i * 0.1) ** 2, 0)
+            if i == 12:
+                path.modify(1, pos=vector(2, 2, 0))
+            if i == 20:
+                path.append(vector(3, 0, 0), color=color.red)
+    """)
+    truth = {}
+
+    def on_frame(i, image):
+        from springscene.vpython.core.canvases import canvas
+        for o in canvas._all[0]._objects:
+            if o._kind == "curve":
+                truth.setdefault(id(o), []).append([p["pos"].value for p in o._pts])
+
+    run_program(prog, tmp_path / "run.jsonl", RunOptions(fps=25), on_frame=on_frame)
+    rec = read(tmp_path / "run.jsonl")
+    curves = rec.of_kind("curve")
+    assert len(curves) == 2
+    trail = next(c for c in curves if c.first["retain"] == 5)
+    shape = rec["path"]
+    truths = list(truth.values())
+    for track, expected in zip((trail, shape) if len(truths[0][-1]) <= 5 else (shape, trail),
+                               truths):
+        for f in range(rec.frames):
+            assert np.allclose(track.points(f), np.array(expected[f]).reshape(-1, 3)), f
+    assert len(trail.points()) == 5                    # retain keeps the newest five
+    assert np.allclose(shape.points()[-1], [3, 0, 0])
+    kinds = {k for line in lines(tmp_path / "run.jsonl") for c in line.get("points", {}).values()
+             for k in c}
+    assert kinds == {"reset", "append", "drop"}       # appends stay appends
+
+
+def test_labels_deletions_graphs_and_printed_text(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        ball = sphere()
+        tag = label(pos=vector(0, 1, 0), text="t = 0")
+        gone = box(pos=vector(2, 0, 0))
+        g = graph(title="height", xtitle="t", ytitle="y")
+        line = gcurve(color=color.red, label="y")
+        for i in range(10):
+            rate(10)
+            t = (i + 1) * 0.1
+            tag.text = "t = {:.1f}".format(t)
+            line.plot(t, t * t)
+            print("step", i)
+            if i == 4:
+                gone.delete()
+    """)
+    _, rec = record(tmp_path, prog, fps=10)
+    texts = rec["tag"].text
+    assert texts[0] == "t = 0" and texts[-1] == "t = 0.9"
+    assert rec["tag"].kind == "label"
+    gone = rec["gone"] if "gone" in rec else rec.of_kind("box")[0]
+    assert gone.deleted is not None
+    assert np.isnan(gone.pos[gone.deleted:]).all() and not np.isnan(gone.pos[:gone.deleted]).any()
+    (series,) = rec.series
+    assert series.kind == "gcurve" and series.label == "y" and series.color == (1, 0, 0)
+    assert series.graph["title"] == "height"
+    xy = series.points()
+    assert np.allclose(xy[:, 1], xy[:, 0] ** 2) and len(xy) >= 9
+    assert len(series.points(frame=3)) < len(xy)          # the graph grows with the frames
+    assert rec.printed.startswith("step 0\nstep 1\n") and "step 8\n" in rec.printed
+
+
+def test_gzip_and_a_recording_cut_short(tmp_path):
+    _, rec = record(tmp_path, EXAMPLES / "bounce.py", frames=20, fps=25)
+    full = (tmp_path / "run.jsonl").read_text()
+    with gzip.open(tmp_path / "run.jsonl.gz", "wt") as fh:
+        fh.write(full)
+    again = read(tmp_path / "run.jsonl.gz")
+    assert again.frames == rec.frames and np.array_equal(again["ball"].pos, rec["ball"].pos)
+    cut = full[: full.rindex('{"frame":10') + 20]       # killed mid-line: no end line
+    (tmp_path / "cut.jsonl").write_text(cut)
+    short = read(tmp_path / "cut.jsonl")
+    assert short.frames == 10 and short.end is None
+    (tmp_path / "other.jsonl").write_text('{"hello": 1}\n')
+    with pytest.raises(UserError, match="not a springscene recording"):
+        read(tmp_path / "other.jsonl")
+
+
+def test_a_program_error_leaves_no_recording(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        for i in range(10):
+            rate(10)
+            b.pos.x += 1
+        raise ValueError("no more data")
+    """)
+    with pytest.raises(ProgramError, match="no more data"):
+        run_program(prog, tmp_path / "v.mp4", RunOptions(fps=10, antialias=False,
+                                                         record=str(tmp_path / "r.jsonl")))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--record", "r.txt"], "r.txt: the recording is a .jsonl or .jsonl.gz file"),
+    (["--record", "nowhere/r.jsonl"], "nowhere/r.jsonl: folder"),
+    (["--out", "r.jsonl", "--record", "s.jsonl"], "the output r.jsonl is the recording already"),
+    (["--out", "r.jsonl", "--fps", "0"], "--fps 0: must be a whole number above 0"),
+])
+def test_bad_record_flags_are_one_line_exit_2(tmp_path, cli, args, message):
+    (tmp_path / "p.py").write_text("from vpython import *\nsphere()\n")
+    args = [str(tmp_path / a) if a.endswith((".txt", ".jsonl")) else a for a in args]
+    if str(tmp_path / "r.jsonl") not in args:
+        args = ["--out", tmp_path / "v.mp4"] + args
+    proc = cli("vpython", tmp_path / "p.py", *args)
+    err = proc.stderr
+    assert proc.returncode == 2 and err.count("\n") == 1 and message in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["p.py"]
+
+
+def test_the_command_writes_the_recording_beside_the_video(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        while True:
+            rate(50)
+            b.pos.x += 0.01
+    """)
+    proc = run_cli("vpython", str(prog), "--out", str(tmp_path / "v.mp4"), "--draft",
+                   "--duration", "1", "--fps", "25", "--record", str(tmp_path / "v.jsonl"))
+    assert proc.returncode == 0, proc.stderr
+    assert f"wrote {tmp_path / 'v.jsonl'}" in proc.stdout
+    rec = read(tmp_path / "v.jsonl")
+    assert rec.frames == 25 and np.allclose(np.diff(rec["b"].pos[:, 0]), 0.02)
+    leftovers = [p.name for p in tmp_path.iterdir() if p.name.startswith(".")]
+    assert leftovers == []
+
+
+def test_recording_memory_is_bounded(tmp_path):
+    """A long run of a thousand moving spheres: the recording adds well under 50 MB to the
+    run's peak (it holds one row an object, not the frames), drawn or not."""
+    prog = write(tmp_path, """
+        from vpython import *
+        balls = [sphere(pos=vector(i % 10, (i // 10) % 10, i // 100), radius=0.2)
+                 for i in range(1000)]
+        t = 0
+        while True:
+            rate(25)
+            t += 0.04
+            for i, b in enumerate(balls):
+                b.pos.y = (i // 10) % 10 + 0.3 * sin(t + i)
+    """)
+
+    def peak(*extra) -> float:
+        proc = run_cli("vpython", str(prog), "--duration", "60", "--fps", "5", "--draft",
+                       "--no-page", *extra)
+        assert proc.returncode == 0, proc.stderr
+        found = re.search(r"peak memory ([\d.]+)M", proc.stdout)
+        return float(found.group(1))
+
+    plain = peak("--out", str(tmp_path / "a.mp4"))
+    recorded = peak("--out", str(tmp_path / "b.mp4"), "--record", str(tmp_path / "b.jsonl"))
+    assert read(tmp_path / "b.jsonl").frames == 300
+    assert recorded - plain < 50, (plain, recorded)
