@@ -240,8 +240,9 @@
     if (o.kind === "points" && (o.n.origin || o.j.origin)) origin = valueAt(o, "origin", o.born);
     for (var i = a; i < b; i++) {
       var at = offset + 7 * i, pos = vec(F[at], F[at + 1], F[at + 2]);
-      var pt = { pos: origin ? pos.add(origin) : pos, color: vec(F[at + 3], F[at + 4], F[at + 5]) };
-      if (F[at + 6] > 0) pt.radius = F[at + 6];
+      var pt = { pos: origin ? pos.add(origin) : pos };
+      if (F[at + 3] >= 0) pt.color = vec(F[at + 3], F[at + 4], F[at + 5]);   // its own colour
+      if (F[at + 6] > 0) pt.radius = F[at + 6];                               // its own radius
       out.push(pt);
     }
     return out;

@@ -22,6 +22,7 @@ import base64
 import gzip
 import html
 import json
+import math
 import re
 import sys
 from array import array
@@ -30,6 +31,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any, Iterator
 
+from ..record.reader import numbers
 from .safe_html import sanitize
 
 __all__ = ["replay_data", "frames_of", "DRAWN_KINDS"]
@@ -113,8 +115,18 @@ class _Segments:
 
 
 def _row(p, width: int) -> list[float]:
-    """A point as ``width`` floats (missing or null values as 0)."""
-    row = [float(v) if isinstance(v, (int, float)) else 0.0 for v in list(p)[:width]]
+    """A point as ``width`` floats. A curve's point is ``[x, y, z]``, then its own colour
+    (a list, or null) and radius where it has them, or ``[x, y, z, r, g, b, radius]``;
+    as floats ``[x, y, z, r, g, b, radius]`` with r = -1 for no colour of its own and 0
+    for no radius of its own (the object's, then). A series' point is ``[x, y]``."""
+    p = list(p)
+    if width == _POINT_WIDTH:
+        color = p[3] if len(p) > 3 and (p[3] is None or isinstance(p[3], list)) else None
+        if len(p) > 3 and (p[3] is None or isinstance(p[3], list)):
+            p = p[:3] + (list(color) if color else [-1.0, -1.0, -1.0]) + p[4:5]
+        elif len(p) == 3:
+            p = p + [-1.0, -1.0, -1.0]
+    row = [float(v) if _is_number(v) else 0.0 for v in p[:width]]
     return row + [0.0] * (width - len(row))
 
 
@@ -236,7 +248,11 @@ class _Replay:
                 obj.set(k, name, value)
 
     def _set(self, k: int, name: str, change: dict) -> None:
-        ids, values = change.get("ids") or [], change.get("values") or []
+        ids = change.get("ids") or []
+        if "f8" in change:           # numbers: exact float64s, NaN for an unset value
+            values = [None if math.isnan(v) else v for v in numbers(change).tolist()]
+        else:                        # booleans and text
+            values = change.get("values") or []
         dim = 3 if ids and len(values) == 3 * len(ids) else 1
         for i, oid in enumerate(ids):
             obj = self.objects.get(int(oid))
@@ -292,8 +308,10 @@ def _texture_urls(objects: dict[int, _Object]) -> dict[str, str]:
     for obj in objects.values():
         for _, name in obj.attrs.get("texture", ()):
             if isinstance(name, str) and name not in urls:
-                f = folder.joinpath(f"{name}_texture.jpg")
-                if f.is_file():
+                # GlowScript's ":earth_texture.jpg" (textures.earth), or the name "earth"
+                file = name[1:] if name.startswith(":") else f"{name}_texture.jpg"
+                f = folder.joinpath(file)
+                if "/" not in file and f.is_file():
                     urls[name] = ("data:image/jpeg;base64,"
                                   + base64.b64encode(f.read_bytes()).decode("ascii"))
     return urls
