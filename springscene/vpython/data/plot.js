@@ -50,7 +50,29 @@ function SpringscenePlot(area, gr, series, F, I) {
     if (!isFinite(b.y0)) { b.y0 = 0; b.y1 = 1; }
     if (b.x1 <= b.x0) { b.x0 -= 0.5; b.x1 += 0.5; }
     if (b.y1 <= b.y0) { b.y0 -= 0.5; b.y1 += 0.5; }
+    var pad = 0.05 * (b.y1 - b.y0);               // as Plotly's autorange, data off the frame
+    if (gr.ymin === null || gr.ymin === undefined) b.y0 -= pad;
+    if (gr.ymax === null || gr.ymax === undefined) b.y1 += pad;
     return b;
+  }
+  function tick(v, step) { return (Math.abs(v) < 1e-9 * step ? 0 : +v.toPrecision(6)) + ""; }
+  function legend() {
+    var named = series.filter(function (s) { return s.label && s.visible !== false; });
+    if (!named.length) return;
+    ctx.font = "12px Verdana, Arial, sans-serif";
+    var w = 0;
+    named.forEach(function (s) { w = Math.max(w, ctx.measureText(s.label).width); });
+    var x = W - M.right - w - 40, y = M.top + 6;
+    ctx.fillStyle = "rgba(255,255,255,0.85)"; ctx.strokeStyle = "#ccc";
+    ctx.fillRect(x, y, w + 34, 18 * named.length + 6); ctx.strokeRect(x, y, w + 34, 18 * named.length + 6);
+    ctx.textAlign = "left"; ctx.textBaseline = "middle";
+    named.forEach(function (s, i) {
+      var cy = y + 12 + 18 * i, color = css(s.color, "#000");
+      ctx.fillStyle = ctx.strokeStyle = color; ctx.lineWidth = 2;
+      if (s.kind === "gdots") { ctx.beginPath(); ctx.arc(x + 14, cy, 3, 0, 2 * Math.PI); ctx.fill(); }
+      else { ctx.beginPath(); ctx.moveTo(x + 5, cy); ctx.lineTo(x + 23, cy); ctx.stroke(); }
+      ctx.fillText(s.label, x + 28, cy);
+    });
   }
   function axes(b, X, Y) {
     var fg = css(gr.foreground, "#000");
@@ -62,12 +84,12 @@ function SpringscenePlot(area, gr, series, F, I) {
     ctx.textAlign = "center"; ctx.textBaseline = "top";
     for (var x = Math.ceil(b.x0 / sx) * sx; x <= b.x1 + 1e-9 * sx; x += sx) {
       ctx.beginPath(); ctx.moveTo(X(x), M.top); ctx.lineTo(X(x), H - M.bottom); ctx.stroke();
-      ctx.fillText(+x.toPrecision(6) + "", X(x), H - M.bottom + 4);
+      ctx.fillText(tick(x, sx), X(x), H - M.bottom + 4);
     }
     ctx.textAlign = "right"; ctx.textBaseline = "middle";
     for (var y = Math.ceil(b.y0 / sy) * sy; y <= b.y1 + 1e-9 * sy; y += sy) {
       ctx.beginPath(); ctx.moveTo(M.left, Y(y)); ctx.lineTo(W - M.right, Y(y)); ctx.stroke();
-      ctx.fillText(+y.toPrecision(6) + "", M.left - 4, Y(y));
+      ctx.fillText(tick(y, sy), M.left - 4, Y(y));
     }
     ctx.strokeStyle = fg;
     ctx.strokeRect(M.left, M.top, W - M.left - M.right, H - M.top - M.bottom);
@@ -113,6 +135,7 @@ function SpringscenePlot(area, gr, series, F, I) {
     var Y = function (y) { return H - M.bottom - (y - b.y0) / (b.y1 - b.y0) * (H - M.top - M.bottom); };
     axes(b, X, Y);
     series.forEach(function (s, j) { drawSeries(s, states[j], X, Y); });
+    legend();
   }
   return { show: show, element: cv };
 }
