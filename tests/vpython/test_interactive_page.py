@@ -8,20 +8,32 @@ browser tests are marked slow (a Chromium each module, WebGL in software on 2 co
 from __future__ import annotations
 
 import errno
+import json
 import re
 import subprocess
+import sys
 import zipfile
+from pathlib import Path
 
 import numpy as np
 import pytest
+from PIL import Image
 
 import recordings
 from browser import Browser, require_chromium
+from springscene import jobs
 from springscene.errors import OutputError
+from springscene.view import imagediff
+from springscene.vpython.record import reader
 from springscene.vpython.page import glow_library
 from springscene.vpython.page.interactive import write_interactive_page
 from springscene.vpython.page.replay_data import replay_data
 from springscene.vpython.page.safe_html import sanitize
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "benchmarks" / "fidelity"))
+import harness  # noqa: E402  benchmarks/fidelity: the scenes, their ids variants
+from idscene import PALETTE  # noqa: E402
 
 MB = 1 << 20
 INJECTION = "</script><script>window.pwned=1</script><!--"
@@ -249,3 +261,62 @@ def test_ten_seconds_play_in_ten_seconds(browser, tmp_path):
     assert playback["program_s"] == pytest.approx(10.0)
     assert abs(playback["wall_s"] - 10.0) <= 0.5
     assert browser.js("return window.springscene.frame()") == 250
+
+
+# ---- real programs, recorded ------------------------------------------------------------
+
+# scenes whose program ends before the first frame: the recording's one frame is the end
+PICTURE_SCENES = ("helices", "labels", "curves", "texture")
+
+
+def _recorded(program: Path, folder: Path, name: str, **options) -> tuple[Path, np.ndarray]:
+    """springscene's still of ``program`` (the canvas alone) and the run's recording."""
+    rec, still = folder / f"{name}.jsonl", folder / f"{name}.png"
+    jobs.vpython(program, still, supervised=False, record=str(rec), page=False,
+                 canvas_only=True, **options)
+    return rec, np.asarray(Image.open(still).convert("RGB"))
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scene", PICTURE_SCENES)
+def test_the_replayed_canvas_is_real_vpythons_and_springscenes_picture(browser, scene,
+                                                                       tmp_path):
+    ids_program, table = harness.write_ids_program(scene, tmp_path)
+    pictures, stills = {}, {}
+    for name, program in (("scene", harness.SCENES / f"{scene}.py"), ("ids", ids_program)):
+        rec, stills[name] = _recorded(program, tmp_path, f"{scene}.{name}")
+        browser.open(write_interactive_page(rec, tmp_path / f"{scene}.{name}.html"))
+        browser.js("window.springscene.seek(window.springscene.frames - 1)")
+        pictures[name] = browser.canvas_picture()
+    Image.fromarray(pictures["scene"]).save(tmp_path / f"{scene}.page.png")
+    names = [f"object {k}" for k in range(len(json.loads(table.read_text())))]
+    real = {suffix: np.asarray(Image.open(harness.REFERENCE / f"{scene}{suffix}.png")
+                               .convert("RGB")) for suffix in ("", ".ids")}
+    for against, (a, a_ids) in {"real VPython": (real[""], real[".ids"]),
+                                "springscene's still": (stills["scene"], stills["ids"])}.items():
+        result = imagediff.compare_scene(pictures["scene"], a, pictures["ids"], a_ids,
+                                         PALETTE, names=names)
+        print(f"{scene} against {against}: IoU "
+              f"{', '.join(f'{o.iou:.3f}' for o in result.objects)}; mean ΔE00 "
+              f"{result.mean_de:.2f}; ΔE00 > 5 on {result.over_percent:.2f} % of pixels")
+        assert all(o.iou >= 0.98 for o in result.objects), (against, result.objects)
+        assert result.mean_de <= 2 and result.over_percent <= 1, against
+
+
+@pytest.mark.slow
+def test_a_recorded_program_seeks_to_the_readers_values(browser, tmp_path):
+    program = ROOT / "springscene" / "examples" / "spring_graph.py"
+    rec, _ = _recorded(program, tmp_path, "spring_graph", duration=2)
+    page = write_interactive_page(rec, tmp_path / "spring_graph.html")
+    run = reader.read(rec)
+    browser.open(page)
+    ball, spring = run["ball"], run["spring"]
+    for k in (40, 3, run.frames - 1, 17, 0):
+        browser.js("window.springscene.seek(arguments[0])", k)
+        got = browser.js("""var s = window.springscene, b = s.object(arguments[0]),
+                            h = s.object(arguments[1]);
+                            return [[b.pos.x, b.pos.y, b.pos.z], [h.axis.x, h.axis.y, h.axis.z],
+                                    s.canvas(0).range]""", ball.id, spring.id)
+        assert got[0] == pytest.approx(ball.value("pos", k), rel=1e-6, abs=1e-7)
+        assert got[1] == pytest.approx(spring.value("axis", k), rel=1e-6, abs=1e-7)
+    assert browser.js("return document.querySelectorAll('.vp-graph canvas').length") == 2
