@@ -200,7 +200,14 @@ def test_nothing_the_program_wrote_runs(browser, tmp_path):
     text = rec.read_text()
     text = text.replace('"title": "y(t)"', '"title": ' + repr(INJECTION).replace("'", '"'))
     rec.write_text(text)
-    page = write_interactive_page(rec, tmp_path / "evil.html")
+    widgets = [
+        {"kind": "button", "text": '<img src=x onerror="window.pwned=5">go', "seq": 1,
+         "color": (0, 0, 0), "background": (1, 1, 1), "anchor": "caption"},
+        {"kind": "wtext", "text": "<b>w</b><script>window.pwned=6</script>", "seq": 2,
+         "anchor": "caption"},
+        {"kind": "slider", "min": 0, "max": 1, "step": 0.1, "value": 0.5, "length": 200,
+         "width": 10, "vertical": False, "anchor": "title", "seq": 3}]
+    page = write_interactive_page(rec, tmp_path / "evil.html", widgets=widgets)
     browser.open(page)
     browser.js("window.springscene.seek(5)")
     assert browser.js("return window.pwned") is None
@@ -209,7 +216,10 @@ def test_nothing_the_program_wrote_runs(browser, tmp_path):
     title = browser.js("return window.springscene.canvas(0).title_anchor[0].innerHTML")
     assert "<b>bold</b>" in title and "<img" not in title and "<script" not in title
     caption = browser.js("return window.springscene.canvas(0).caption_anchor[0].innerHTML")
-    assert caption == "<i>it</i>"
+    assert caption.startswith("<i>it</i><button") and "<img" not in caption
+    assert browser.js("""return [...document.querySelectorAll('#vp-page button, #vp-page input')]
+                         .map(e => e.disabled)""") == [True, True]
+    assert '<span class="vp-wtext"><b>w</b></span>' in caption
     assert browser.js("return window.springscene.object(5).text") == INJECTION
 
 
