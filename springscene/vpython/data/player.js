@@ -15,12 +15,26 @@
   window.__GSlang = "vpython";
   window.__context = { glowscript_container: $(page) };
 
-  function decode(b64, Type) {
+  // The numbers (replay_data.py): base64 of zlib, bytes shuffled; timelines XORed by row
+  function inflate(b64) {
     var s = atob(b64), bytes = new Uint8Array(s.length);
     for (var i = 0; i < s.length; i++) bytes[i] = s.charCodeAt(i);
-    return new Type(bytes.buffer);
+    var stream = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("deflate"));
+    return new Response(stream).arrayBuffer().then(function (buf) {
+      var b = new Uint8Array(buf), n = b.length / 4, out = new Uint8Array(b.length);
+      for (var k = 0; k < 4; k++) for (var j = 0; j < n; j++) out[4 * j + k] = b[k * n + j];
+      return out.buffer;
+    });
   }
-  var F = decode(data.f32, Float32Array), I = decode(data.i32, Int32Array);
+  function unxor(U) {
+    data.objects.forEach(function (o) {
+      for (var name in o.n) {
+        var tl = o.n[name], d = tl[0], at = tl[1], end = d * tl[2];
+        for (var i = d; i < end; i++) U[at + i] ^= U[at + i - d];
+      }
+    });
+  }
+  var F, I;
   var times = data.times, nframes = times.length;
 
   // the last i in [0, n) with at(i) <= k, or -1
@@ -396,27 +410,36 @@
 
   makeBar();
   if (!nframes) { ui.time.textContent = "the recording has no frame"; return; }
-  data.canvases.forEach(makeCanvas);
-  if (!canvasList.length) makeCanvas({ id: 0, t: {} });
-  data.objects.forEach(function (o) { if (MAKERS[o.kind]) makeObject(o); });
-  makeGraphs();
-  makePrinted();
-  var left = Object.keys(data.left_out);
-  if (left.length) {
-    var note = document.getElementById("vp-left-out");
-    note.textContent = "Not drawn in this page: " + left.map(function (k) {
-      return data.left_out[k] + " " + k; }).join(", ") + " (the video shows them).";
+  Promise.all([inflate(data.f32), inflate(data.i32)]).then(function (buffers) {
+    unxor(new Uint32Array(buffers[0]));
+    F = new Float32Array(buffers[0]);
+    I = new Int32Array(buffers[1]);
+    start();
+  }, function (e) { ui.time.textContent = "this browser cannot read the recording: " + e; });
+
+  function start() {
+    data.canvases.forEach(makeCanvas);
+    if (!canvasList.length) makeCanvas({ id: 0, t: {} });
+    data.objects.forEach(function (o) { if (MAKERS[o.kind]) makeObject(o); });
+    makeGraphs();
+    makePrinted();
+    var left = Object.keys(data.left_out);
+    if (left.length) {
+      var note = document.getElementById("vp-left-out");
+      note.textContent = "Not drawn in this page: " + left.map(function (k) {
+        return data.left_out[k] + " " + k; }).join(", ") + " (the video shows them).";
+    }
+    show(0);
+    api.ready = true;
+    api.setup_ms = performance.now() - started;
+    // playing starts when GlowScript has drawn the first frame (its meshes made), as VPython's
+    // program starts when its page is up
+    var first = canvasList[0].glow;
+    function firstDrawn() {
+      first.unbind("draw_complete", firstDrawn);
+      api.first_drawn_ms = performance.now() - started;
+      if (!/[#&]paused\b/.test(location.hash) && !state.playing && state.frame === 0) play();
+    }
+    first.bind("draw_complete", firstDrawn);
   }
-  show(0);
-  api.ready = true;
-  api.setup_ms = performance.now() - started;
-  // playing starts when GlowScript has drawn the first frame (its meshes made), as VPython's
-  // program starts when its page is up
-  var first = canvasList[0].glow;
-  function firstDrawn() {
-    first.unbind("draw_complete", firstDrawn);
-    api.first_drawn_ms = performance.now() - started;
-    if (!/[#&]paused\b/.test(location.hash) && !state.playing && state.frame === 0) play();
-  }
-  first.bind("draw_complete", firstDrawn);
 })();
