@@ -155,3 +155,44 @@ def crystal(path: Path, seconds: float = 10.0) -> Path:
                     [length, np.full_like(length, 0.16), np.full_like(length, 0.16)]
                 ).ravel().tolist()}}})
     return write(path, frames, program="AtomicSolid.py")
+
+
+# AtomicSolid as a VPython program: 64 atoms and 144 springs (helices), every position,
+# axis, up and size changing at every step, for the recorder itself to record
+ATOMIC_SOLID = """\
+from vpython import *
+N, L, k, m, dt = 4, 1.0, 50.0, 1.0, 0.01
+atoms = []
+for x in range(N):
+    for y in range(N):
+        for z in range(N):
+            a = sphere(pos=L*vector(x-1.5, y-1.5, z-1.5), radius=0.15, color=color.red)
+            a.p = vector.random() * 0.3
+            atoms.append(a)
+def idx(x, y, z): return (x*N + y)*N + z
+springs = []
+for x in range(N):
+    for y in range(N):
+        for z in range(N):
+            for d in ((1,0,0),(0,1,0),(0,0,1)):
+                if x+d[0] < N and y+d[1] < N and z+d[2] < N:
+                    i, j = idx(x,y,z), idx(x+d[0], y+d[1], z+d[2])
+                    s = helix(pos=atoms[i].pos, axis=atoms[j].pos-atoms[i].pos, radius=0.08, coils=10, thickness=0.016, color=color.orange)
+                    s.ends = (i, j)
+                    springs.append(s)
+t = 0
+while t < 10:
+    rate(100)
+    for s in springs:
+        i, j = s.ends
+        F = k * (mag(s.axis) - L) * norm(s.axis)
+        atoms[i].p = atoms[i].p + F*dt
+        atoms[j].p = atoms[j].p - F*dt
+    for a in atoms:
+        a.pos = a.pos + a.p/m*dt
+    for s in springs:
+        i, j = s.ends
+        s.pos = atoms[i].pos
+        s.axis = atoms[j].pos - atoms[i].pos
+    t += dt
+"""
