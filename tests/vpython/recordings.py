@@ -12,6 +12,7 @@ from pathlib import Path
 import numpy as np
 
 FPS = 25
+LABEL_GONE = 60          # the spring's label is deleted at this frame
 DEFAULT_LIGHTS = [
     {"kind": "distant_light", "direction": [0.22, 0.44, 0.88], "color": [0.8, 0.8, 0.8]},
     {"kind": "distant_light", "direction": [-0.88, -0.22, -0.44], "color": [0.3, 0.3, 0.3]},
@@ -102,6 +103,8 @@ def spring(path: Path, seconds: float = 4.0, *, title: str = "<b>spring</b> k = 
                                  "append": [[*y, 1, 1, 0, 0.005]]}}
             f["canvases"] = [{"id": 0, "range": 0.8 + 0.001 * k}]
         f["graphs"] = {**f.get("graphs", {}), "data": {"11": [k / FPS, y[1]]}}
+        if k == LABEL_GONE:
+            f["deleted"] = [5]
         if printed and k % FPS == 0:
             f["printed"] = printed
         frames.append(f)

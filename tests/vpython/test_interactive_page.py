@@ -262,7 +262,7 @@ def test_seeking_shows_the_recordings_values_backwards_too_and_fast(browser, spr
                             c = s.object(4);
                             return [s.frame(), b.pos.x, b.pos.y, b.pos.z, h.axis.y, h.size.x,
                                     c.npoints, c.point(c.npoints - 1).pos.y,
-                                    s.canvas(0).range]""", k)
+                                    s.canvas(0).range, s.object(5).visible]""", k)
         y = _ball_y(k)
         assert got[0] == k
         assert got[1:4] == pytest.approx([0.0, y, 0.0], abs=1e-6)
@@ -271,6 +271,7 @@ def test_seeking_shows_the_recordings_values_backwards_too_and_fast(browser, spr
         assert got[6] == min(k + 1, 20)             # the trail: retain 20, dropped in front
         assert got[7] == pytest.approx(y, abs=1e-6)
         assert got[8] == pytest.approx(0.8 + 0.001 * k if k else 0.8)
+        assert got[9] is (k < recordings.LABEL_GONE)           # deleted at that frame
     drawn = [browser.driver.execute_async_script(SEEK_DRAWN_JS, k) for k in (90, 10, 55)]
     print(f"seek: max {max(timings):.1f} ms, mean {np.mean(timings):.1f} ms to set the "
           f"frame; to GlowScript's next picture of it {max(drawn):.0f} ms at most")
@@ -288,6 +289,35 @@ def test_the_users_camera_stays_until_follow(browser, spring_page):
     assert browser.js("return window.springscene.canvas(0).range") == 3
     browser.js("window.springscene.follow()")
     assert browser.js("return window.springscene.canvas(0).range") == pytest.approx(0.83)
+
+
+@pytest.mark.slow
+def test_glowscripts_mouse_turns_and_zooms_and_the_users_camera_stays(browser, spring_page):
+    from selenium.webdriver.common.action_chains import ActionChains  # noqa: PLC0415
+    from selenium.webdriver.common.actions.wheel_input import ScrollOrigin  # noqa: PLC0415
+
+    browser.open(spring_page)
+    browser.js("window.springscene.seek(10)")
+    element = browser.js("return window.springscene.canvas(0).__overlay_element")
+    forward = browser.js("var f = window.springscene.canvas(0).forward; return [f.x, f.y, f.z]")
+    ActionChains(browser.driver).scroll_from_origin(ScrollOrigin.from_element(element),
+                                                    0, 300).perform()
+    browser.wait("return window.springscene.canvas(0).__range > 0.82", 5)  # zoomed out
+    # a right-button drag across the canvas (GlowScript turns the camera with it)
+    x, y = browser.js("var r = arguments[0].getBoundingClientRect(); "
+                      "return [r.left + r.width / 2, r.top + r.height / 2]", element)
+    mouse = [("mousePressed", x, 0)] + [("mouseMoved", x + dx, 2) for dx in range(20, 120, 20)]
+    for kind, at, buttons in mouse + [("mouseReleased", x + 100, 0)]:
+        browser.driver.execute_cdp_cmd("Input.dispatchMouseEvent", {
+            "type": kind, "x": at, "y": y, "button": "right", "buttons": buttons,
+            "clickCount": 1})
+    turned = browser.js("var f = window.springscene.canvas(0).forward; return [f.x, f.y, f.z]")
+    assert turned != pytest.approx(forward)                     # GlowScript's spin
+    browser.js("window.springscene.seek(40)")
+    assert browser.js("return window.springscene.user_camera(0)") is True
+    assert browser.js("var f = window.springscene.canvas(0).forward; return [f.x, f.y, f.z]") \
+        == pytest.approx(turned)
+    assert browser.js("return document.querySelector('.vp-follow').disabled") is False
 
 
 @pytest.mark.slow
