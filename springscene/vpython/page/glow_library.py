@@ -74,17 +74,25 @@ def cache_dir() -> Path:
     return Path(base) / "springscene" / f"glowscript-{VERSION}"
 
 
-def library() -> GlowLibrary:
+def library(download: bool = True) -> GlowLibrary:
     """GlowScript's library: installed, cached, or downloaded into the cache (above).
+
+    Parameters
+    ----------
+    download : bool
+        Whether to download it when it is neither installed nor cached.
 
     Raises
     ------
     OutputError
-        None of the three ways gave the files; the message says what to do.
+        None of the ways gave the files; the message says what to do.
     """
     folder = cache_dir()
     if folder not in _found:
-        _found[folder] = _installed() or _cached() or _downloaded()
+        found = _installed() or _cached()
+        if found is None and not download:
+            raise _missing(folder, "not downloaded here")
+        _found[folder] = found or _downloaded()
     return _found[folder]
 
 
