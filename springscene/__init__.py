@@ -70,5 +70,10 @@ def __getattr__(name: str):
     raise AttributeError(f"module 'springscene' has no attribute {name!r}")
 
 
+def load_ipython_extension(ipython) -> None:
+    """``%load_ext springscene``: the ``%%vpython`` cell magic (:mod:`springscene.notebook`)."""
+    importlib.import_module("springscene.notebook").load_ipython_extension(ipython)
+
+
 def __dir__() -> list[str]:
     return sorted(set(globals()) | set(_API) | {"__version__"})
