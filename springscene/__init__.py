@@ -18,7 +18,8 @@ import types
 from pathlib import Path
 
 _API = ("load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
-        "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Config", "UserError")
+        "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
+        "UserError")
 
 __all__ = ["__version__", *_API]
 _MODULE_FUNCTIONS = ("render", "figures")     # submodules that are API functions too

@@ -21,8 +21,11 @@ Examples
 
 from __future__ import annotations
 
+import gzip
 import os
+import shutil
 import sys
+import tempfile
 from collections.abc import Mapping
 from dataclasses import replace as _replace
 from importlib import resources
@@ -33,14 +36,18 @@ import numpy as np
 
 from . import _callable, config, jobs
 from .errors import OutputError, UserError
+from .outputs import atomic_path
 from .video import WRITE_ERRNOS, reason_of
-from .results import Analysis, Still, Table, Video, table
+from .results import Analysis, Run, Still, Table, Video, table
 from .science.sweep import SweepResult, parse_omega
 from .settings import Config
 from .view.overlay import parse_overlays
+from .vpython.record.reader import read as read_recording
+from .vpython.run.options import check_record
 
 __all__ = ["load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
-           "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Config", "UserError"]
+           "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
+           "UserError"]
 
 STARTER_FOLDERS = ("configs", "examples")       # package data: springscene/configs, /examples
 STARTER_SUFFIXES = (".toml", ".py", ".ipynb")
@@ -431,39 +438,89 @@ def figures(cfg: Config | str, out: str | Path, *, prefix: str = "", draft: bool
     return jobs.figures(cfg, out, backend=backend, antialias=not draft, prefix=prefix)
 
 
-def run_vpython(program: str | Path, out: str | Path, *, duration: float | None = None,
-                frames: int | None = None, fps: int = 50, draft: bool = False,
-                backend: str = "auto", **options: Any) -> Video:
-    """Run a VPython program headless to a video (or a still ``.png``) of its page.
+def run_vpython(program: str | Path, out: str | Path | None = None, *,
+                duration: float | None = None, frames: int | None = None, fps: int = 50,
+                draft: bool = False, backend: str = "auto", record: str | Path | None = None,
+                **options: Any) -> Run | Video:
+    """Run a VPython program headless: as data to test it, or to a video of its page.
 
     Parameters
     ----------
     program : str or Path
         A VPython 7, VPython 6 or Web VPython program (``springscene.init("bounce")``
         copies an example).
-    out : str or Path
-        ``.mp4``, ``.gif`` or ``.png``.
+    out : str or Path, optional
+        None (the default): nothing drawn, the run read back as a :class:`Run`.
+        ``.mp4``, ``.gif``, ... or ``.png``: a video or still of the page, as a
+        :class:`Video`. ``.jsonl``: the recording alone, kept there, as a :class:`Run`.
     duration, frames : optional
-        Program seconds, or frames, to film (default 10 s or until the program ends).
+        Program seconds, or frames, to run (default 10 s or until the program ends).
     fps : int
-        Frames per program second.
+        Frames per program second: a :class:`Run` holds the objects at each frame.
     draft : bool
-        No anti-aliasing.
+        No anti-aliasing (a video).
     backend : {"auto", "egl", "osmesa"}
-        The off-screen OpenGL.
+        The off-screen OpenGL (a video).
+    record : str or Path, optional
+        Keep the recording (docs/recording.md) in this ``.jsonl`` or ``.jsonl.gz`` file;
+        with a video ``out``, the :class:`Video`'s ``run`` is then its :class:`Run`.
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
         (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``), or ``timeout``
-        and ``max_memory`` for the supervised run.
+        and ``max_memory`` for the supervised run (the program runs in a child process),
+        or ``supervised=False`` to run it in this one.
 
     Returns
     -------
-    Video
-        The file and its frames; the program's ``scene.capture`` pictures in ``images``.
+    Run or Video
+        A :class:`Run` (no ``out``, or a ``.jsonl``): the objects by the program's own
+        names with their attributes over the frames, the graphs, what was printed and
+        the program's globals. A :class:`Video` (a video or still ``out``): the file and
+        its frames; the program's ``scene.capture`` pictures in ``images``.
+
+    Raises
+    ------
+    ProgramError
+        The program raised: its own traceback.
+    UserError
+        Bad input, named in one line.
+
+    Examples
+    --------
+    >>> import springscene, tempfile
+    >>> program = springscene.init("projectile", tempfile.mkdtemp())
+    >>> run = springscene.run_vpython(program, duration=0.5, fps=10)
+    >>> run.frames, run.times[:3].tolist(), run["ball"].kind
+    (5, [0.0, 0.1, 0.2], 'sphere')
+    >>> run["ball"].pos.shape, run.globals["g"]
+    ((5, 3), array([ 0. , -9.8,  0. ]))
     """
-    result = jobs.vpython(program, out, duration=duration, frames=frames, fps=fps,
-                          backend=backend, antialias=not draft, **options)
-    return Video(result)
+    run_options = dict(duration=duration, frames=frames, fps=fps, backend=backend,
+                       antialias=not draft, **options)
+    if out is not None and Path(out).suffix.lower() != ".jsonl":     # a video or a still
+        result = jobs.vpython(program, out, record=None if record is None else str(record),
+                              **run_options)
+        kept = result.recording
+        return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
+    if out is not None:                        # the recording alone, kept as ``out``
+        result = jobs.vpython(program, out, record=record, **run_options)
+        return Run(read_recording(result.path), result, result.path)
+    check_record(record)
+    with tempfile.TemporaryDirectory(prefix="springscene-run-") as folder:
+        scratch = Path(folder) / "run.jsonl"
+        result = jobs.vpython(program, scratch, **run_options)
+        recording = read_recording(scratch)
+        if record is not None:
+            _keep(scratch, Path(record))
+    return Run(recording, result, record)
+
+
+def _keep(recording: Path, target: Path) -> None:
+    """A recording copied to ``target`` whole (gzip-compressed for a ``.gz`` name)."""
+    with atomic_path(target) as tmp, open(recording, "rb") as src:
+        opener = gzip.open if target.name.lower().endswith(".gz") else open
+        with opener(tmp, "wb") as dst:
+            shutil.copyfileobj(src, dst)
 
 
 # ---- springscene.render and springscene.figures: modules, and the API's functions -------
