@@ -244,10 +244,10 @@ class ProgramRuns:
         in its place, when given), and its options with the call's."""
         marker = self.request.node.get_closest_marker(PROGRAM_MARKER)
         if marker is None or not marker.args:
-            raise pytest.UsageError(
-                f"vpython_run() names no program and {self.request.node.nodeid} has no "
-                f"{PROGRAM_MARKER} marker: call vpython_run('lab.py') or mark the module, "
-                f"pytestmark = pytest.mark.{PROGRAM_MARKER}('lab.py')")
+            pytest.fail(f"vpython_run() names no program and {self.request.node.nodeid} has "
+                        f"no {PROGRAM_MARKER} marker: call vpython_run('lab.py') or mark the "
+                        f"module, pytestmark = pytest.mark.{PROGRAM_MARKER}('lab.py')",
+                        pytrace=False)
         given = self.config.getoption("springscene_program", None)
         program = Path(self.config.invocation_params.dir, given) if given else marker.args[0]
         return program, {**marker.kwargs, **options}
