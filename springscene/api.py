@@ -450,40 +450,33 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
         A VPython 7, VPython 6 or Web VPython program (``springscene.init("bounce")``
         copies an example).
     out : str or Path, optional
-        None (the default): nothing drawn, the run read back as a :class:`Run`.
-        ``.mp4``, ``.gif``, ... or ``.png``: a video or still of the page, as a
-        :class:`Video`. ``.jsonl``: the recording alone, kept there, as a :class:`Run`.
-    duration, frames : optional
-        Program seconds, or frames, to run (default 10 s or until the program ends).
-    fps : int
-        Frames per program second: a :class:`Run` holds the objects at each frame.
-    draft : bool
-        No anti-aliasing (a video).
-    backend : {"auto", "egl", "osmesa"}
-        The off-screen OpenGL (a video).
+        None: nothing drawn, the run as a :class:`Run`. ``.mp4``, ``.gif``, ... or
+        ``.png``: a video or still of the page, a :class:`Video`. ``.jsonl``: the
+        recording alone, kept there, as a :class:`Run`.
+    duration, frames, fps : optional
+        Program seconds or frames to run (default 10 s, or until the program ends); frames
+        a program second (a :class:`Run` holds the objects at each frame).
+    draft, backend : optional
+        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``).
     record : str or Path, optional
         Keep the recording (docs/recording.md) in this ``.jsonl`` or ``.jsonl.gz`` file;
-        with a video ``out``, the :class:`Video`'s ``run`` is then its :class:`Run`.
+        a :class:`Video`'s ``run`` is then its :class:`Run`.
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
-        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``), or ``timeout``
-        and ``max_memory`` for the supervised run (the program runs in a child process),
-        or ``supervised=False`` to run it in this one.
+        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout`` and
+        ``max_memory`` for the supervised run (a child process), or ``supervised=False``.
 
     Returns
     -------
     Run or Video
-        A :class:`Run` (no ``out``, or a ``.jsonl``): the objects by the program's own
-        names with their attributes over the frames, the graphs, what was printed and
-        the program's globals. A :class:`Video` (a video or still ``out``): the file and
-        its frames; the program's ``scene.capture`` pictures in ``images``.
+        A :class:`Run`: objects by the program's own names with their attributes over the
+        frames, graphs, printed text, globals. A :class:`Video`: the file and its frames,
+        the program's ``scene.capture`` pictures in ``images``.
 
     Raises
     ------
     ProgramError
         The program raised: its own traceback.
-    UserError
-        Bad input, named in one line.
 
     Examples
     --------
@@ -497,14 +490,19 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     """
     run_options = dict(duration=duration, frames=frames, fps=fps, backend=backend,
                        antialias=not draft, **options)
-    if out is not None and Path(out).suffix.lower() != ".jsonl":     # a video or a still
-        result = jobs.vpython(program, out, record=None if record is None else str(record),
-                              **run_options)
-        kept = result.recording
-        return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
-    if out is not None:                        # the recording alone, kept as ``out``
-        result = jobs.vpython(program, out, record=record, **run_options)
+    if out is None:
+        return _as_data(program, record, run_options)
+    result = jobs.vpython(program, out, record=None if record is None else str(record),
+                          **run_options)
+    if result.path.suffix.lower() == ".jsonl":       # the recording alone, kept as ``out``
         return Run(read_recording(result.path), result, result.path)
+    kept = result.recording                          # (record=: the video's Run too)
+    return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
+
+
+def _as_data(program, record, run_options: dict) -> Run:
+    """The program run to a recording alone in a temporary folder, read back (and kept in
+    ``record``, when given)."""
     check_record(record)
     with tempfile.TemporaryDirectory(prefix="springscene-run-") as folder:
         scratch = Path(folder) / "run.jsonl"

@@ -57,6 +57,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import springscene
+
 from .outputs import write_png
 from .view.compare import (MAX_MEAN_DIFF, PIXEL_TOLERANCE, TOLERANCE, compare, diff_image,
                            read_image)
@@ -263,10 +265,8 @@ class ProgramRuns:
     @staticmethod
     def _run(path: Path, options: dict) -> tuple:
         """(the run, None), or (None, the error) for a program that raised or ended badly."""
-        from . import api  # noqa: PLC0415  heavy: the API (numpy, the jobs) only when a test runs a program
-
-        try:
-            return api.run_vpython(path, **options), None
+        try:                     # (springscene's API loads on this first use, not with pytest)
+            return springscene.run_vpython(path, **options), None
         except Exception as exc:        # ProgramError (its traceback), UserError, RunEnded
             return None, exc
 
