@@ -319,6 +319,7 @@ class Run:
         span = f"{self.times[0]:g} to {self.times[-1]:g} s" if self.frames else "no frames"
         graphs = f"{len(self.graphs)} graph{'s' * (len(self.graphs) != 1)}"
         return (f"<Run {self.program}: {self.frames} frames at {self.fps} fps, {span}, ended "
-                f"by {self.ended}; {len(self.objects)} objects ({named}); {graphs}>")
+                f"by {self.ended}; {len(self.objects)} object{'s' * (len(self.objects) != 1)} "
+                f"({named}); {graphs}>")
 
     # (a notebook's view of a run, _repr_html_, is to come: the page that replays it)

@@ -351,13 +351,17 @@ def _traces(args: argparse.Namespace) -> list[tuple[str, Path]]:
 @contextlib.contextmanager
 def _trace_recording(args: argparse.Namespace, traces: list):
     """The recording the run keeps: ``--record``'s, none for an ``--out`` that is the
-    recording itself, or, for ``--trace`` alone, a hidden file beside ``--out`` (on its
-    file system), removed after."""
+    recording itself, or, for ``--trace`` alone, a file in a hidden folder beside
+    ``--out`` (on its file system), removed after. The folder is named as the supervised
+    run's own (``.OUT.PID.XXXXXXXX.run``), so one left by a springscene killed outright
+    goes with theirs, at the next run to that output."""
     if not traces or args.record is not None or args.out.lower().endswith(DATA_FORMATS):
         yield args.record
         return
-    out = Path(args.out)
-    folder = tempfile.mkdtemp(prefix=f".{out.name[:100]}.", suffix=".trace",
+    out, name = Path(args.out), Path(args.out).name
+    while len(os.fsencode(name)) > 200:         # (a legal name, as the run's folder's)
+        name = name[:-1]
+    folder = tempfile.mkdtemp(prefix=f".{name}.{os.getpid()}.", suffix=".run",
                               dir=out.parent if str(out.parent) else ".")
     try:
         yield str(Path(folder) / "trace.jsonl")
