@@ -213,6 +213,22 @@ def test_trace_columns_have_units_and_the_csv_is_the_numbers_exactly(tmp_path):
     assert first.startswith("0,,,,")
 
 
+def test_trace_units_follow_vpythons_own_pixels_and_world_units(tmp_path):
+    run = run_here(write(tmp_path, """
+        from vpython import *
+        dots = points(pos=[vector(0, 0, 0)], radius=3)
+        big = points(pos=[vector(1, 0, 0)], radius=0.2, size_units="world")
+        path = curve(pos=[vector(0, 0, 0), vector(1, 1, 0)], radius=0.05)
+        pinned = label(pixel_pos=True, pos=vector(20, 30, 0), text="pinned")
+        rate(10)
+    """), fps=10)
+    assert run.trace("dots")["radius [px]"][0] == 3
+    assert run.trace("big")["radius [m]"][0] == 0.2
+    assert {"origin.x [m]", "radius [m]", "axis.x [m]"} <= set(run.trace("path"))
+    pinned = run.trace("pinned")
+    assert pinned["pos.x [px]"][0] == 20 and pinned["pixel_pos"][0] == 1
+
+
 @pytest.mark.parametrize("name, message", [
     ("bal", "--trace bal: prog.py has no global variable 'bal' holding an object (its "
             "names: arrow_late, atoms[0..2], tag)"),
