@@ -104,7 +104,7 @@ def vpython_cell(line: str, cell: str):
 
 def load_ipython_extension(ipython) -> None:
     """``%load_ext springscene``: the ``%%vpython`` cell magic."""
-    from IPython.core.error import UsageError  # noqa: PLC0415  only inside IPython
+    from IPython.core.error import UsageError  # noqa: PLC0415  heavy: IPython, in a notebook only
 
     def magic(line: str, cell: str):
         try:
