@@ -8,6 +8,7 @@ The Python API (:mod:`springscene.api`), loaded on first use so that
     run = springscene.simulate(cfg.replace(k=20), duration=2)
     picture = springscene.still(cfg, time=0.25)
     video = springscene.render(cfg, "spring.mp4", duration=1)
+    lab = springscene.run_vpython("lab.py")       # a VPython program's run, as data: a Run
 """
 
 from __future__ import annotations
@@ -18,7 +19,8 @@ import types
 from pathlib import Path
 
 _API = ("load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
-        "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Config", "UserError")
+        "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
+        "UserError")
 
 __all__ = ["__version__", *_API]
 _MODULE_FUNCTIONS = ("render", "figures")     # submodules that are API functions too
@@ -68,6 +70,11 @@ def __getattr__(name: str):
         api = importlib.import_module("springscene.api")   # on first use: numpy, the jobs
         return getattr(api, name)
     raise AttributeError(f"module 'springscene' has no attribute {name!r}")
+
+
+def load_ipython_extension(ipython) -> None:
+    """``%load_ext springscene``: the ``%%vpython`` cell magic (:mod:`springscene.notebook`)."""
+    importlib.import_module("springscene.notebook").load_ipython_extension(ipython)
 
 
 def __dir__() -> list[str]:

@@ -21,8 +21,11 @@ Examples
 
 from __future__ import annotations
 
+import gzip
 import os
+import shutil
 import sys
+import tempfile
 from collections.abc import Mapping
 from dataclasses import replace as _replace
 from importlib import resources
@@ -33,14 +36,18 @@ import numpy as np
 
 from . import _callable, config, jobs
 from .errors import OutputError, UserError
+from .outputs import atomic_path
 from .video import WRITE_ERRNOS, reason_of
-from .results import Analysis, Still, Table, Video, table
+from .results import Analysis, Run, Still, Table, Video, table
 from .science.sweep import SweepResult, parse_omega
 from .settings import Config
 from .view.overlay import parse_overlays
+from .vpython.record.reader import read as read_recording
+from .vpython.run.options import check_record
 
 __all__ = ["load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
-           "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Config", "UserError"]
+           "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
+           "UserError"]
 
 STARTER_FOLDERS = ("configs", "examples")       # package data: springscene/configs, /examples
 STARTER_SUFFIXES = (".toml", ".py", ".ipynb")
@@ -431,39 +438,87 @@ def figures(cfg: Config | str, out: str | Path, *, prefix: str = "", draft: bool
     return jobs.figures(cfg, out, backend=backend, antialias=not draft, prefix=prefix)
 
 
-def run_vpython(program: str | Path, out: str | Path, *, duration: float | None = None,
-                frames: int | None = None, fps: int = 50, draft: bool = False,
-                backend: str = "auto", **options: Any) -> Video:
-    """Run a VPython program headless to a video (or a still ``.png``) of its page.
+def run_vpython(program: str | Path, out: str | Path | None = None, *,
+                duration: float | None = None, frames: int | None = None, fps: int = 50,
+                draft: bool = False, backend: str = "auto", record: str | Path | None = None,
+                **options: Any) -> Run | Video:
+    """Run a VPython program headless: as data to test it, or to a video of its page.
 
     Parameters
     ----------
     program : str or Path
         A VPython 7, VPython 6 or Web VPython program (``springscene.init("bounce")``
         copies an example).
-    out : str or Path
-        ``.mp4``, ``.gif`` or ``.png``.
-    duration, frames : optional
-        Program seconds, or frames, to film (default 10 s or until the program ends).
-    fps : int
-        Frames per program second.
-    draft : bool
-        No anti-aliasing.
-    backend : {"auto", "egl", "osmesa"}
-        The off-screen OpenGL.
+    out : str or Path, optional
+        None: nothing drawn, the run as a :class:`Run`. ``.mp4``, ``.gif``, ... or
+        ``.png``: a video or still of the page, a :class:`Video`. ``.jsonl``: the
+        recording alone, kept there, as a :class:`Run`.
+    duration, frames, fps : optional
+        Program seconds or frames to run (default 10 s, or until the program ends); frames
+        a program second (a :class:`Run` holds the objects at each frame).
+    draft, backend : optional
+        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``).
+    record : str or Path, optional
+        Keep the recording (docs/recording.md) in this ``.jsonl`` or ``.jsonl.gz`` file;
+        a :class:`Video`'s ``run`` is then its :class:`Run`.
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
-        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``), or ``timeout``
-        and ``max_memory`` for the supervised run.
+        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout`` and
+        ``max_memory`` for the supervised run (a child process), or ``supervised=False``.
 
     Returns
     -------
-    Video
-        The file and its frames; the program's ``scene.capture`` pictures in ``images``.
+    Run or Video
+        A :class:`Run`: objects by the program's own names with their attributes over the
+        frames, graphs, printed text, globals. A :class:`Video`: the file and its frames,
+        the program's ``scene.capture`` pictures in ``images``.
+
+    Raises
+    ------
+    ProgramError
+        The program raised: its own traceback.
+
+    Examples
+    --------
+    >>> import springscene, tempfile
+    >>> program = springscene.init("projectile", tempfile.mkdtemp())
+    >>> run = springscene.run_vpython(program, duration=0.5, fps=10)
+    >>> run.frames, run.times[:3].tolist(), run["ball"].kind
+    (5, [0.0, 0.1, 0.2], 'sphere')
+    >>> run["ball"].pos.shape, run.globals["g"]
+    ((5, 3), array([ 0. , -9.8,  0. ]))
     """
-    result = jobs.vpython(program, out, duration=duration, frames=frames, fps=fps,
-                          backend=backend, antialias=not draft, **options)
-    return Video(result)
+    run_options = dict(duration=duration, frames=frames, fps=fps, backend=backend,
+                       antialias=not draft, **options)
+    if out is None:
+        return _as_data(program, record, run_options)
+    result = jobs.vpython(program, out, record=None if record is None else str(record),
+                          **run_options)
+    if result.path.suffix.lower() == ".jsonl":       # the recording alone, kept as ``out``
+        return Run(read_recording(result.path), result, result.path)
+    kept = result.recording                          # (record=: the video's Run too)
+    return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
+
+
+def _as_data(program, record, run_options: dict) -> Run:
+    """The program run to a recording alone in a temporary folder, read back (and kept in
+    ``record``, when given)."""
+    check_record(record)
+    with tempfile.TemporaryDirectory(prefix="springscene-run-") as folder:
+        scratch = Path(folder) / "run.jsonl"
+        result = jobs.vpython(program, scratch, **run_options)
+        recording = read_recording(scratch)
+        if record is not None:
+            _keep(scratch, Path(record))
+    return Run(recording, result, record)
+
+
+def _keep(recording: Path, target: Path) -> None:
+    """A recording copied to ``target`` whole (gzip-compressed for a ``.gz`` name)."""
+    with atomic_path(target) as tmp, open(recording, "rb") as src:
+        opener = gzip.open if target.name.lower().endswith(".gz") else open
+        with opener(tmp, "wb") as dst:
+            shutil.copyfileobj(src, dst)
 
 
 # ---- springscene.render and springscene.figures: modules, and the API's functions -------

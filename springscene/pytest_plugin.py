@@ -1,8 +1,9 @@
-"""springscene's pytest plugin: image regression against stored baselines.
+"""springscene's pytest plugin: image regression against stored baselines, and VPython
+programs run as data for a test to check.
 
 Installed with the package (the ``pytest11`` entry point ``springscene``), it gives a
-test the ``verify_image`` fixture, in the spirit of pytest-pyvista's
-``verify_image_cache``::
+test the ``vpython_run`` fixture (below) and the ``verify_image`` fixture, in the spirit
+of pytest-pyvista's ``verify_image_cache``::
 
     def test_scene(verify_image):
         cfg = springscene.config.load("wiki.toml")
@@ -21,6 +22,30 @@ A relative baseline name is looked up in the ``springscene_baselines`` ini folde
 (relative to the root folder) when it is set, else in ``baselines/`` beside the test
 file. ``springscene_missing_baseline = fail`` (ini) fails on a missing baseline instead of
 storing it (for CI, where a first run should not pass by storing).
+
+VPython programs
+----------------
+``vpython_run(program, **options)`` runs a VPython program headless and gives its
+:class:`springscene.Run` (:func:`springscene.run_vpython` with no ``out``: the objects by
+the program's names with their attributes over the frames, the graphs, what it printed,
+its globals)::
+
+    def test_the_ball_falls(vpython_run):
+        run = vpython_run("drop.py", duration=1)
+        assert run["ball"].pos[-1, 1] < run["ball"].pos[0, 1]
+
+- A relative program is looked up beside the test file, then in the current folder.
+- A module (or class, or test) names its program once with the ``vpython_program``
+  marker, ``pytestmark = pytest.mark.vpython_program("lab.py", fps=100)``; then
+  ``vpython_run()`` runs that one (options given to the call add to the marker's).
+- ``pytest --springscene-program submission.py`` runs that program wherever a marker
+  names one: an instructor's tests, written against their own program, check a
+  student's.
+- A program is run once a session for the same options (and file contents); each test
+  that asks again gets the same :class:`~springscene.Run`, or the same error (a program
+  that raised fails each test with its traceback).
+- The run is supervised, as ``springscene vpython``'s (a child process; ``timeout`` and
+  ``max_memory`` options stop a program that runs away).
 """
 
 from __future__ import annotations
@@ -32,11 +57,15 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+import springscene
+
 from .outputs import write_png
 from .view.compare import (MAX_MEAN_DIFF, PIXEL_TOLERANCE, TOLERANCE, compare, diff_image,
                            read_image)
 
 DIFF_FOLDER = "springscene-diffs"
+PROGRAM_MARKER = "vpython_program"
+_RUNS = pytest.StashKey[dict]()    # a session's VPython runs: (file, options) -> (run, error)
 _configs: list = []      # the running sessions' configs, innermost last (verify() outside fixtures)
 
 
@@ -51,6 +80,9 @@ def pytest_addoption(parser) -> None:
     group.addoption("--springscene-diffs", dest="springscene_diffs", metavar="DIR",
                     help="folder for the new picture and the diff image of a failed "
                     "comparison (default .pytest_cache/d/springscene-diffs)")
+    group.addoption("--springscene-program", dest="springscene_program", metavar="PROGRAM",
+                    help="run this VPython program wherever a test's vpython_program "
+                    "marker names one (an instructor's tests on a student's program)")
     parser.addini("springscene_baselines", "folder of the baseline pictures, relative to the "
                   "root folder (default: baselines/ beside each test file)", default="")
     parser.addini("springscene_missing_baseline", "store (default) or fail when a baseline "
@@ -59,6 +91,10 @@ def pytest_addoption(parser) -> None:
 
 def pytest_configure(config) -> None:
     _configs.append(config)
+    config.stash[_RUNS] = {}
+    config.addinivalue_line("markers", f"{PROGRAM_MARKER}(program, **options): the VPython "
+                            "program (and springscene.run_vpython options) that vpython_run() "
+                            "runs; a relative path is beside the test file")
 
 
 def pytest_unconfigure(config) -> None:
@@ -176,3 +212,77 @@ def verify_image(request) -> ImageVerifier:
     """Compare a picture with its stored baseline (stored on the first run); see
     :mod:`springscene.pytest_plugin`."""
     return ImageVerifier(request)
+
+
+# ---- VPython programs as data: the vpython_run fixture ----------------------------------------
+
+class ProgramRuns:
+    """The ``vpython_run`` fixture: ``vpython_run(program=None, **options)`` is the
+    program's :class:`springscene.Run` (the module's docstring)."""
+
+    def __init__(self, request) -> None:
+        self.request = request
+        self.config = request.config
+        self.runs: dict = self.config.stash.get(_RUNS, {})
+
+    def __call__(self, program: str | Path | None = None, **options):
+        __tracebackhide__ = True
+        if "out" in options:
+            raise TypeError("vpython_run: no out (it gives the run as data; "
+                            "springscene.run_vpython writes videos)")
+        if program is None:
+            program, options = self._marked(options)
+        path = self._locate(Path(program))
+        key = (str(path.resolve()), *_stamp(path), repr(sorted(options.items())))
+        if key not in self.runs:
+            self.runs[key] = self._run(path, options)
+        run, error = self.runs[key]
+        if error is not None:
+            raise error.with_traceback(None)
+        return run
+
+    def _marked(self, options: dict) -> tuple[str | Path, dict]:
+        """The program the closest ``vpython_program`` marker names (``--springscene-program``
+        in its place, when given), and its options with the call's."""
+        marker = self.request.node.get_closest_marker(PROGRAM_MARKER)
+        if marker is None or not marker.args:
+            pytest.fail(f"vpython_run() names no program and {self.request.node.nodeid} has "
+                        f"no {PROGRAM_MARKER} marker: call vpython_run('lab.py') or mark the "
+                        f"module, pytestmark = pytest.mark.{PROGRAM_MARKER}('lab.py')",
+                        pytrace=False)
+        given = self.config.getoption("springscene_program", None)
+        program = Path(self.config.invocation_params.dir, given) if given else marker.args[0]
+        return program, {**marker.kwargs, **options}
+
+    def _locate(self, program: Path) -> Path:
+        """A relative program beside the test file, else from the current folder."""
+        if not program.is_absolute():
+            beside = Path(self.request.path).parent / program
+            if beside.is_file():
+                return beside
+        return program
+
+    @staticmethod
+    def _run(path: Path, options: dict) -> tuple:
+        """(the run, None), or (None, the error) for a program that raised or ended badly."""
+        try:                     # (springscene's API loads on this first use, not with pytest)
+            return springscene.run_vpython(path, **options), None
+        except Exception as exc:        # ProgramError (its traceback), UserError, RunEnded
+            return None, exc
+
+
+def _stamp(path: Path) -> tuple:
+    """The file's modification time and size (a program edited during a session runs again);
+    a missing file is left for the run to name."""
+    try:
+        st = path.stat()
+    except OSError:
+        return (None, None)
+    return (st.st_mtime_ns, st.st_size)
+
+
+@pytest.fixture
+def vpython_run(request) -> ProgramRuns:
+    """Run a VPython program headless and get its :class:`springscene.Run`; see
+    :mod:`springscene.pytest_plugin`."""
+    return ProgramRuns(request)

@@ -2,7 +2,8 @@
 
 :class:`Table` (a run as columns with units), :class:`Still` (a picture, shown as a
 PNG), :class:`Video` (a video file, shown as an HTML5 video), :class:`Analysis` (measured
-beside theory, shown as the table ``springscene analyze`` prints).
+beside theory, shown as the table ``springscene analyze`` prints), :class:`Run` (a VPython
+program's run as data, from its recording: what a test of the program reads).
 """
 
 from __future__ import annotations
@@ -18,6 +19,8 @@ import numpy as np
 
 from . import jobs
 from .settings import Config
+from .vpython.record import trace
+from .vpython.record.reader import Recording, Series, Snapshot
 
 EMBED_LIMIT = 25 * 2 ** 20      # a video up to this size is embedded in the notebook itself
 MIME = {".mp4": "video/mp4", ".webm": "video/webm", ".ogv": "video/ogg", ".ogg": "video/ogg",
@@ -102,19 +105,22 @@ class Still(np.ndarray):
 class Video:
     """A video (or GIF, or the PNG of a VPython program) written to ``path``; Jupyter shows it.
 
-    ``frames``, ``fps`` and ``seconds`` (wall time); ``result`` is the job's own record
+    ``frames``, ``fps`` and ``seconds`` (wall time); ``run``, a VPython program's
+    :class:`Run` when its recording was kept (``run_vpython(..., record=...)``), else
+    None; ``result`` is the job's own record
     (:class:`~springscene.render.RenderStats` or
     :class:`~springscene.vpython.run.runner.ProgramResult`), whose other fields read through.
     Up to :data:`EMBED_LIMIT` bytes the file is embedded in the notebook, above it linked
     by its path relative to the notebook's folder.
     """
 
-    def __init__(self, result: Any) -> None:
+    def __init__(self, result: Any, run: Run | None = None) -> None:
         self.result = result
         self.path = Path(result.path)
+        self.run = run            # a VPython run kept with record=: its Run; else None
 
     def __getattr__(self, name: str) -> Any:
-        if name == "result":
+        if name in ("result", "run"):
             raise AttributeError(name)
         return getattr(self.result, name)
 
@@ -152,3 +158,168 @@ class Analysis(dict):
 
     def _repr_pretty_(self, printer, cycle: bool) -> None:
         printer.text(self.report())
+
+
+# ---- a VPython program's run, as data -----------------------------------------------------
+
+class Objects(list):
+    """The run's objects (each a :class:`~springscene.vpython.record.reader.Track`), in the
+    order the program made them; :meth:`of_kind` picks one kind."""
+
+    def of_kind(self, kind: str) -> Objects:
+        """The objects of one kind (``"sphere"``, ``"helix"``, ``"label"``, ...)."""
+        return Objects(o for o in self if o.kind == kind)
+
+
+class Graph:
+    """One of the program's graphs: ``title``, ``xtitle``, ``ytitle`` (the program's
+    text, HTML as VPython takes it) and its ``series`` (each a
+    :class:`~springscene.vpython.record.reader.Series`: ``kind``, ``label``, ``color``
+    and ``points()``, the (n, 2) points at the run's end). ``graph["K"]`` is the series
+    labelled ``K``; ``graph[0]`` the first series."""
+
+    def __init__(self, record: dict, series: list[Series]) -> None:
+        self.id: int = record["id"]
+        self.title: str = record.get("title") or ""
+        self.xtitle: str = record.get("xtitle") or ""
+        self.ytitle: str = record.get("ytitle") or ""
+        self.record = record                 # every key the recording holds (bounds, size)
+        self.series = series
+
+    def __getitem__(self, key: str | int) -> Series:
+        if isinstance(key, int):
+            return self.series[key]
+        for s in self.series:
+            if s.label == key:
+                return s
+        labels = ", ".join(repr(s.label) for s in self.series) or "none"
+        raise KeyError(f"graph {self.title or self.id!r}: no series labelled {key!r} "
+                       f"(labels: {labels})")
+
+    def __len__(self) -> int:
+        return len(self.series)
+
+    def __iter__(self):
+        return iter(self.series)
+
+    def __repr__(self) -> str:
+        labels = ", ".join(f"{s.kind} {s.label!r}" for s in self.series)
+        return f"<Graph {self.title or self.id!r}: {labels or 'no series'}>"
+
+
+class Run:
+    """A VPython program's run as data: what :func:`springscene.run_vpython` gives.
+
+    Built on the run's recording (docs/recording.md; ``springscene.vpython.record.reader``),
+    it holds every object the program drew at every frame of the video (frames at
+    ``t = frame / fps`` of program time, the clock of ``rate``), its graphs, what it
+    printed and its global numbers at the end.
+
+    Attributes
+    ----------
+    objects : Objects
+        Every object, in the order made; ``run.objects.of_kind("sphere")``.
+    names : dict
+        The program's global variable names that held an object (or a list of them) at
+        its end; ``run["ball"]`` is one, as a
+        :class:`~springscene.vpython.record.reader.Track` whose recorded attributes are
+        numpy arrays over the frames: ``run["ball"].pos`` is (frames, 3), as are
+        ``.axis``, ``.size`` (a sphere's is its diameter three times), ``.color``;
+        ``.opacity``, ``.visible``, ... are (frames,): NaN before the object was made and
+        after it was deleted. ``.attributes()`` lists what was recorded of it.
+    times : numpy.ndarray
+        Each frame's program time, s.
+    printed : str
+        What the program printed.
+    graphs : list of Graph
+        Each graph with its title, axis titles and series (``graph["K"].points()``).
+    series : list of Series
+        Every series of every graph.
+    globals : dict
+        The program's global numbers (``int``, ``float``), booleans and vectors (numpy
+        arrays) at its end: ``run.globals["k"]``.
+    canvases : list of dict
+        Each canvas's attributes at the end (title, caption, camera, ...).
+    ended : str
+        ``"program"`` (it ended), ``"duration"`` or ``"frames"`` (the run's limit).
+    recording : Path or None
+        The recording's file, when it was kept (``record=``, or an ``out`` ending
+        ``.jsonl``).
+    result : ProgramResult
+        The run's own record (``seconds`` of wall clock, ``dialect``, ``notes``, ...).
+
+    Notes
+    -----
+    VPython's attributes carry no units. A wiki page's programs are in SI, so springscene
+    reads them so: positions and sizes in metres, times in seconds (``run.trace`` labels
+    its columns ``t [s]``, ``pos.x [m]``, ...; see
+    :mod:`springscene.vpython.record.trace`).
+    """
+
+    def __init__(self, recording: Recording, result: Any = None,
+                 kept: str | Path | None = None) -> None:
+        self._recording = recording
+        self.result = result
+        self.recording = Path(kept) if kept is not None else None
+        self.objects = Objects(recording.objects)
+        self.names: dict[str, Any] = recording.names
+        self.times: np.ndarray = recording.times
+        self.fps: int = recording.fps
+        self.program: str = recording.program
+        self.dialect: str = recording.dialect
+        self.globals: dict[str, Any] = recording.globals
+        self.canvases: list[dict] = recording.canvases
+        self.series: list[Series] = recording.series
+        self.graphs = [Graph(g, [s for s in recording.series if s.graph.get("id") == g["id"]])
+                       for g in recording.graphs]
+        end = recording.end or {}
+        self.ended: str = end.get("ended") or getattr(result, "ended", None) or "cut short"
+
+    @property
+    def frames(self) -> int:
+        return len(self.times)
+
+    @property
+    def printed(self) -> str:
+        return self._recording.printed
+
+    def __getitem__(self, key: str | int) -> Any:
+        """An object by the program's variable name (a list of them for a list), or by the
+        recording's id; a name the program does not have is a KeyError naming those it has."""
+        return self._recording[key]
+
+    def __contains__(self, key: str | int) -> bool:
+        return key in self._recording
+
+    def of_kind(self, kind: str) -> Objects:
+        """The objects of one kind: ``run.of_kind("sphere")``."""
+        return self.objects.of_kind(kind)
+
+    def frame_at(self, t: float) -> int:
+        """The frame shown at program time ``t``: the last one taken at or before it."""
+        return self._recording.frame_at(t)
+
+    def at(self, t: float) -> Snapshot:
+        """Every object as it was at program time ``t`` (the frame shown then):
+        ``run.at(1.5)["ball"].pos`` is a (3,) array."""
+        return self._recording.at(t)
+
+    def trace(self, name: str, out: str | Path | None = None) -> dict[str, np.ndarray]:
+        """The object the program calls ``name`` (``"ball"``, ``"atoms[3]"``) over the
+        frames, as columns with units (``"t [s]"``, ``"pos.x [m]"``, ...; what
+        ``springscene vpython --trace`` writes); also written as CSV to ``out`` if given.
+        ``pandas.DataFrame(run.trace("ball"))`` is a data frame."""
+        table = trace.columns(self._recording, trace.find(self._recording, name, "trace"))
+        if out is not None:
+            trace.write(out, table, "trace")
+        return table
+
+    def __repr__(self) -> str:
+        named = ", ".join(self.names) or "none named"
+        span = f"{self.times[0]:g} to {self.times[-1]:g} s" if self.frames else "no frames"
+        graphs = f"{len(self.graphs)} graph{'s' * (len(self.graphs) != 1)}"
+        return (f"<Run {self.program}: {self.frames} frames at {self.fps} fps, {span}, ended "
+                f"by {self.ended}; {len(self.objects)} object{'s' * (len(self.objects) != 1)} "
+                f"({named}); {graphs}>")
+
+    # (a notebook's view of a run, _repr_html_, is to come: the page that replays it)

@@ -24,7 +24,8 @@ BIN = Path(sys.executable).parent
 MAX_MODULE_LINES = 600
 MAX_FUNCTION_LINES = 60
 HEAVY = ("vtkmodules", "pyvista", "matplotlib", "cycler", "imageio", "imageio_ffmpeg", "PIL", "tqdm",
-         "skimage")
+         "skimage",
+         "IPython")     # the notebook's: not a dependency, there only inside a notebook
 # standard modules slow enough to matter at start-up: importlib.metadata took 50 ms of the
 # window before springscene's signal handlers are in place (springscene.app.signals)
 SLOW_AT_START = ("importlib.metadata",)

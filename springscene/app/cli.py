@@ -7,9 +7,12 @@ Everything a command does is a call into the ``springscene`` library.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import errno
 import os
+import shutil
 import sys
+import tempfile
 import warnings
 from pathlib import Path
 
@@ -26,7 +29,10 @@ from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
 from ..view.info import info
 from ..view.overlay import OVERLAYS, parse_overlays
-from ..vpython.run.options import MAX_LOD_PX
+from ..outputs import check_output
+from ..vpython.record import trace
+from ..vpython.record.reader import read as read_recording
+from ..vpython.run.options import DATA_FORMATS, FORMATS, MAX_LOD_PX
 from ..vpython.run.supervise import RunEnded
 from ..vpython.run.report import size_text
 
@@ -164,6 +170,10 @@ def _add_vpython_command(sub) -> None:
     s.add_argument("--record", metavar="FILE",
                    help="also keep the run as data: each object, camera, graph and printed "
                    "line at each frame, in FILE (.jsonl or .jsonl.gz; docs/recording.md)")
+    s.add_argument("--trace", action="append", default=[], metavar="NAME",
+                   help="also write the object the program calls NAME (ball, or atoms[0] of a "
+                   "list) over time as CSV beside OUT: OUT-NAME.csv, a row a frame, t [s], "
+                   "pos.x [m], ... (SI by the wiki's convention); may be repeated")
     s.add_argument("--quiet", action="store_true", help="no summary line")
     s.add_argument("--timeout", type=float, metavar="S",
                    help="stop the program after S seconds of wall clock (exit 124)")
@@ -292,19 +302,24 @@ def _vpython(args: argparse.Namespace) -> int:
     overlays = tuple(name.strip() for name in args.overlay.split(",") if name.strip())
     if args.overlay.strip() and not overlays:
         raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
+    traces = _traces(args)
     try:
-        result = jobs.vpython(args.program, args.out, duration=args.duration,
-                              frames=args.frames, fps=args.fps, backend=args.backend,
-                              antialias=not args.draft, overlays=overlays,
-                              page=not args.no_page, canvas_only=args.canvas_only,
-                              quality=args.quality, lod=args.lod, record=args.record,
-                              timeout=args.timeout, max_memory=args.max_memory,
-                              on_dialect=lambda d: print(f"springscene: {args.program}: "
-                                                         f"written for {d.name}",
-                                                         file=sys.stderr, flush=True))
+        with _trace_recording(args, traces) as record:
+            result = jobs.vpython(args.program, args.out, duration=args.duration,
+                                  frames=args.frames, fps=args.fps, backend=args.backend,
+                                  antialias=not args.draft, overlays=overlays,
+                                  page=not args.no_page, canvas_only=args.canvas_only,
+                                  quality=args.quality, lod=args.lod, record=record,
+                                  timeout=args.timeout, max_memory=args.max_memory,
+                                  on_dialect=lambda d: print(f"springscene: {args.program}: "
+                                                             f"written for {d.name}",
+                                                             file=sys.stderr, flush=True))
+            traced = read_recording(record or args.out) if traces else None
     except RunEnded as exc:         # os._exit, a signal, --timeout, --max-memory, sys.exit(n)
         print(one_line(str(exc)), file=sys.stderr)
         return exc.status
+    if args.record is None:
+        result.recording = None              # (--trace's own, removed)
     for note in result.notes:
         print(f"springscene: note: {note}", file=sys.stderr)
     if not args.quiet:
@@ -315,7 +330,43 @@ def _vpython(args: argparse.Namespace) -> int:
         for path in ([result.page] if result.page else []) + result.images + (
                 [result.recording] if result.recording else []):
             print(f"wrote {path}")
+    for path in trace.write_traces(traced, traces) if traces else ():   # (a name it lacks: 2)
+        if not args.quiet:
+            print(f"wrote {path}")
     return 0
+
+
+def _traces(args: argparse.Namespace) -> list[tuple[str, Path]]:
+    """``--trace NAME``s checked before the run: each a name and its CSV beside ``--out``
+    (``OUT-NAME.csv``), somewhere that can be written."""
+    if args.trace:
+        check_output(args.out, FORMATS)           # (--out's own error first)
+    traces = {}
+    for name in args.trace:
+        name = trace.check_name(name)
+        traces[name] = check_output(trace.trace_path(args.out, name), (".csv",), "--trace")
+    return list(traces.items())
+
+
+@contextlib.contextmanager
+def _trace_recording(args: argparse.Namespace, traces: list):
+    """The recording the run keeps: ``--record``'s, none for an ``--out`` that is the
+    recording itself, or, for ``--trace`` alone, a file in a hidden folder beside
+    ``--out`` (on its file system), removed after. The folder is named as the supervised
+    run's own (``.OUT.PID.XXXXXXXX.run``), so one left by a springscene killed outright
+    goes with theirs, at the next run to that output."""
+    if not traces or args.record is not None or args.out.lower().endswith(DATA_FORMATS):
+        yield args.record
+        return
+    out, name = Path(args.out), Path(args.out).name
+    while len(os.fsencode(name)) > 200:         # (a legal name, as the run's folder's)
+        name = name[:-1]
+    folder = tempfile.mkdtemp(prefix=f".{name}.{os.getpid()}.", suffix=".run",
+                              dir=out.parent if str(out.parent) else ".")
+    try:
+        yield str(Path(folder) / "trace.jsonl")
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def one_line(message: str) -> str:

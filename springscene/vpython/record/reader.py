@@ -199,6 +199,8 @@ class Recording:
         for line in lines:
             if "end" in line:
                 self.end = line["end"]
+                if self.end.get("printed"):           # printed after the last frame
+                    self._printed.append((len(self._times), self.end["printed"]))
                 break
             self._frame(line)
         self.times = np.asarray(self._times, dtype=float)
@@ -258,7 +260,7 @@ class Recording:
 
     @property
     def printed(self) -> str:
-        """Everything the program printed (up to the last frame)."""
+        """Everything the program printed (after the last frame too, if it ended)."""
         return "".join(text for _, text in self._printed)
 
     def __getitem__(self, key) -> Any:

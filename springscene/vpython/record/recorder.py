@@ -405,7 +405,12 @@ class Recorder:
     # -- the end -------------------------------------------------------------------------
 
     def close(self, end: dict) -> None:
-        """Write the end line (docs/recording.md) and close the file."""
+        """Write the end line (docs/recording.md) and close the file; what the program
+        printed after the last frame (its result, printed once the loop is done) goes in
+        the end line's ``printed``."""
+        if self._printed:
+            end = {**end, "printed": "".join(self._printed)}
+            self._printed, self._printed_size = [], 0
         self._write({"end": end})
         self._close()
 

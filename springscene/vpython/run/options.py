@@ -95,7 +95,7 @@ def check_request(program, out, options: RunOptions) -> Request:
         if name not in OVERLAYS:
             raise UserError(f"--overlay: unknown overlay {name!r} (choose from "
                             f"{', '.join(OVERLAYS)})")
-    _check_record(options.record, out)
+    check_record(options.record, out)
     still = out.suffix.lower() == ".png"
     if still and frames is not None:
         raise UserError("--frames: a .png output is one still; leave --frames out")
@@ -105,14 +105,17 @@ def check_request(program, out, options: RunOptions) -> Request:
     return Request(path, out, still, budget, limit)
 
 
-def _check_record(record, out: Path) -> None:
-    """``--record FILE``: a ``.jsonl`` or ``.jsonl.gz`` file other than the output, in a
-    folder that exists."""
+def check_record(record, out: Path | None = None) -> None:
+    """``--record FILE``: a ``.jsonl`` or ``.jsonl.gz`` file other than the output (if
+    any), in a folder that exists."""
     if record is None:
         return
     path = Path(record)
     if not str(record).strip() or not path.name.lower().endswith(RECORD_SUFFIXES):
         raise UserError(f"--record {record}: the recording is a .jsonl or .jsonl.gz file")
+    if out is None:
+        check_output(path, (".jsonl", ".gz"), "--record")
+        return
     if out.suffix.lower() in DATA_FORMATS:
         raise UserError(f"--record {record}: the output {out.name} is the recording already")
     if os.path.abspath(path) == os.path.abspath(out):

@@ -156,17 +156,7 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
             film.close(False)
             raise
         attachments.update()      # the render after the program's last step
-        try:
-            if still:
-                picture = film.still()
-                write_png(tmp, picture)
-                film.size = (picture.shape[1], picture.shape[0])
-            elif film.frames == 0 and not data_only:    # no rate(): the final scene is the video
-                film.take()
-            if recorder is not None and (recorder.frames == 0 or timeline.frames == 0):
-                recorder.take()
-        finally:
-            film.close(True)
+        _last_frames(film, recorder, timeline, tmp, still, data_only)
         frames = (1 if still else recorder.frames if data_only else film.frames)
         result = ProgramResult(out, frames, options.fps,
                                timeline.seconds, time.perf_counter() - start, ended,
@@ -176,15 +166,29 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
             recorder.close(_end(recorder, timeline, ended, names, given))
             if options.record is not None:
                 result.recording = Path(options.record)
-    if data_only:
-        result.notes = widgets.notes() + _timing_notes(timeline, options.fps, ended,
-                                                       options.duration)
-        return result
-    result.images = images + _write_extras(out, result, options.page, still,
-                                           film.printed.text(), options.canvas_only)
-    result.notes = film.notes + widgets.notes() + _timing_notes(timeline, options.fps, ended,
-                                                                options.duration)
+    if not data_only:
+        result.images = images + _write_extras(out, result, options.page, still,
+                                               film.printed.text(), options.canvas_only)
+    result.notes = ([] if data_only else film.notes) + widgets.notes() + _timing_notes(
+        timeline, options.fps, ended, options.duration)
     return result
+
+
+def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeline,
+                 tmp: Path, still: bool, data_only: bool) -> None:
+    """The end of the run's pictures: a still's one picture; a video of a program that
+    never called ``rate`` is its final scene (and so is its recording)."""
+    try:
+        if still:
+            picture = film.still()
+            write_png(tmp, picture)
+            film.size = (picture.shape[1], picture.shape[0])
+        elif film.frames == 0 and not data_only:
+            film.take()
+        if recorder is not None and (recorder.frames == 0 or timeline.frames == 0):
+            recorder.take()
+    finally:
+        film.close(True)
 
 
 def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
