@@ -119,6 +119,17 @@ def test_timelines_keep_the_changes_and_dense_ones_keep_no_frames(tmp_path):
     assert len(data["times"]) == 26 and data["times"][25] == 1.0
 
 
+def test_what_was_printed_after_the_last_frame_shows_at_the_last_frame(tmp_path):
+    rec = recordings.spring(tmp_path / "s.jsonl", seconds=1.0, printed="step\n")
+    lines = rec.read_text().splitlines()
+    end = json.loads(lines[-1])
+    end["end"]["printed"] = "done\n"
+    rec.write_text("\n".join(lines[:-1] + [json.dumps(end)]) + "\n")
+    data = replay_data(rec)
+    assert data["printed"] == "step\nstep\ndone\n"
+    assert data["printed_at"] == [[0, 5], [25, 10], [25, 15]]
+
+
 def test_a_gzip_recording_reads_as_the_plain_one(tmp_path):
     rec = recordings.spring(tmp_path / "s.jsonl", seconds=0.5)
     packed = tmp_path / "s.jsonl.gz"

@@ -344,6 +344,8 @@ def replay_data(path: str | Path) -> dict[str, Any]:
             replay.end = rec["end"]
         elif "frame" in rec:
             replay.frame(rec)
+    if replay.end and replay.end.get("printed") and replay.times:
+        replay._printed(len(replay.times) - 1, str(replay.end["printed"]))   # after the last frame
     buf = _Buffers()
     objects = [o.encoded(buf) for o in sorted(replay.objects.values(), key=lambda o: o.id)]
     series = [{**s, "p": replay._series(sid).encoded(buf)}
