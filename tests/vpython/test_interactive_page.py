@@ -346,6 +346,11 @@ def test_ten_seconds_play_in_ten_seconds(browser, tmp_path):
     assert playback["program_s"] == pytest.approx(10.0)
     assert abs(playback["wall_s"] - 10.0) <= 0.5
     assert browser.js("return window.springscene.frame()") == 250
+    browser.js("var s = document.querySelector('.vp-speed'); s.value = '4'; "
+               "s.dispatchEvent(new Event('change')); window.springscene.play()")
+    fast = browser.wait("return window.springscene.playback", 10)
+    print(f"at 4x: {fast['wall_s']:.3f} s")
+    assert fast["speed"] == 4 and abs(fast["wall_s"] - 2.5) <= 0.5
 
 
 # ---- real programs, recorded ------------------------------------------------------------
