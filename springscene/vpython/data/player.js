@@ -216,7 +216,7 @@
   function showObject(entry, k) {
     var o = entry.rec, g = entry.glow;
     var alive = k >= o.born && (o.died === null || k < o.died);
-    var vis = alive && (!o.j.visible || valueAt(o, "visible", k) !== false);
+    var vis = alive && (!(o.j.visible || o.n.visible) || !!valueAt(o, "visible", k));
     if (!alive) { if (entry.shown) { g.visible = false; entry.shown = false; } return; }
     for (var a = 0; a < entry.order.length; a++) {
       var name = entry.order[a], i;
