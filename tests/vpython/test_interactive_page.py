@@ -410,3 +410,30 @@ def test_a_recorded_program_seeks_to_the_readers_values(browser, tmp_path):
         assert got[0] == pytest.approx(ball.value("pos", k), rel=1e-6, abs=1e-7)
         assert got[1] == pytest.approx(spring.value("axis", k), rel=1e-6, abs=1e-7)
     assert browser.js("return document.querySelectorAll('.vp-graph canvas').length") == 2
+
+
+@pytest.mark.slow
+def test_mid_run_the_replayed_canvas_is_springscenes_still_at_that_time(browser, tmp_path):
+    """The wiki's spring with graphs cut at 1 s: the page at its last frame against
+    springscene's still at that time. Objects by their colours (red ball, cyan spring,
+    grey holder on white): the spring is a thin helix, whose anti-aliased rim colours fall
+    outside a colour test, so its bound is looser than the ids scenes' 0.98."""
+    program = ROOT / "springscene" / "examples" / "spring_graph.py"
+    rec, still = _recorded(program, tmp_path, "spring_graph", duration=1.0)
+    browser.open(write_interactive_page(rec, tmp_path / "spring_graph.html"))
+    browser.js("window.springscene.seek(window.springscene.frames - 1)")
+    picture = browser.canvas_picture()
+    de = imagediff.ciede2000(picture, still)
+
+    def by_colour(im):
+        r, g, b = (im[..., i].astype(int) for i in range(3))
+        return {"ball": (r > 120) & (g < 90) & (b < 90),
+                "spring": (g > 120) & (b > 120) & (r < 110),
+                "holder": (abs(r - g) < 12) & (abs(g - b) < 12) & (r < 200)}
+
+    ours, theirs = by_colour(picture), by_colour(still)
+    ious = {k: imagediff.iou(ours[k], theirs[k]) for k in ours}
+    print(f"spring_graph at 1 s: IoU {ious}; mean ΔE00 {de.mean():.2f}; "
+          f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
+    assert de.mean() <= 2 and (de > 5).mean() <= 0.01
+    assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
