@@ -226,3 +226,18 @@ def _unpack(wheel: Path, folder: Path) -> None:
         except BaseException:
             Path(tmp).unlink(missing_ok=True)
             raise
+
+
+def main() -> int:
+    """``python -m springscene.vpython.page.glow_library``: get the library into the cache
+    now (``make setup`` does), say where it is, or say in one line why it cannot be had."""
+    try:
+        print(f"GlowScript's library (vpython {VERSION}): {library().folder}")
+    except OutputError as e:
+        print(f"springscene: {e}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
