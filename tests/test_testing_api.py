@@ -106,7 +106,7 @@ def test_the_wiki_program_is_simulate_bit_for_bit():
 
 def test_a_run_reads_objects_graphs_printed_text_and_globals(tmp_path):
     run = run_here(write(tmp_path, LAB), fps=10)
-    assert run.ended == "program" and run.frames == 20
+    assert run.ended == "program" and run.frames == 21      # 20 rate()s, then the end
     # objects: in the order made, by kind, by the program's names
     assert [o.kind for o in run.objects] == ["sphere"] * 3 + ["label", "box", "arrow"]
     assert run.of_kind("sphere") == run.objects.of_kind("sphere") == run["atoms"]
@@ -123,7 +123,7 @@ def test_a_run_reads_objects_graphs_printed_text_and_globals(tmp_path):
         "rise", "t (s)", "y (m)")
     assert [s.kind for s in plot] == ["gcurve", "gdots"] and len(plot) == 2
     xy = plot["y"].points()
-    # the points plotted up to the last frame (the video's last picture of the graph)
+    # the points plotted up to the last frame: the scene the program left at its end
     assert np.array_equal(xy[:, 0], run.times[1:]) and np.array_equal(xy[:, 0], xy[:, 1])
     assert np.array_equal(plot["-y"].points()[:, 1], -xy[:, 1]) and plot[1] is plot["-y"]
     with pytest.raises(KeyError, match="no series labelled 'z' .*labels: 'y', '-y'"):
@@ -133,7 +133,7 @@ def test_a_run_reads_objects_graphs_printed_text_and_globals(tmp_path):
     assert run.printed == "".join(f"step {i}\n" for i in range(20)) + "done\n"
     assert run.globals["k"] == 12 and run.globals["m"] == 0.25 and run.globals["ready"] is True
     assert np.array_equal(run.globals["g"], [0, -9.8, 0]) and run.globals["t"] == 2.0
-    assert repr(run) == ("<Run prog.py: 20 frames at 10 fps, 0 to 1.9 s, ended by program; "
+    assert repr(run) == ("<Run prog.py: 21 frames at 10 fps, 0 to 2 s, ended by program; "
                          "6 objects (atoms, tag, arrow_late); 1 graph>")
 
 

@@ -162,9 +162,10 @@ def test_no_page_text_twice_and_page_named_after_the_video(tmp_path):
     r = run_program(write(tmp_path, PAGE), tmp_path / "run.mp4", RunOptions(frames=2))
     page = (tmp_path / "run.html").read_text()
     assert r.page == tmp_path / "run.html" and not (tmp_path / "page.html").exists()
-    assert page.count("<video") == 1 and "Caption one" not in page
-    assert "<img" not in page                              # the graphs are in the video
-    assert (tmp_path / "run-graph1.png").exists()          # and beside it as a figure
+    # the interactive page: GlowScript replays the run, the video is linked from it
+    assert page.count('href="run.mp4"') == 1 and "<video" not in page
+    assert "glow.min.js" in page
+    assert (tmp_path / "run-graph1.png").exists()          # the graphs beside it as figures
 
 
 def test_page_that_grows_is_cut_with_a_note(tmp_path):

@@ -109,8 +109,10 @@ def test_only_what_changed_is_written(tmp_path):
     colour = frames[changed_colour[0]]["set"]["color"]
     assert colour["ids"] == [2] and numbers(colour).tolist() == [0.0, 1.0, 0.0]
     rec = read(tmp_path / "run.jsonl")
-    assert rec.frames == 20      # frame f is taken at the f-th rate(), after f moves
-    assert np.allclose(rec["a"].pos[:, 0], -1 + 0.1 * np.arange(20))
+    # frame f is taken at the f-th rate(), after f moves; the last is the scene the
+    # program left when it ended, at its end time
+    assert rec.frames == 21 and rec.times[-1] == pytest.approx(0.4)
+    assert np.allclose(rec["a"].pos[:, 0], -1 + 0.1 * np.arange(21))
 
 
 def test_trails_and_curves_are_point_lists(tmp_path):
@@ -143,7 +145,7 @@ def test_trails_and_curves_are_point_lists(tmp_path):
     truths = list(truth.values())
     for track, expected in zip((trail, shape) if len(truths[0][-1]) <= 5 else (shape, trail),
                                truths):
-        for f in range(rec.frames):
+        for f in range(len(expected)):         # the video's frames (then the end's)
             assert np.allclose(track.points(f), np.array(expected[f]).reshape(-1, 3)), f
     assert len(trail.points()) == 5                    # retain keeps the newest five
     assert np.allclose(shape.points()[-1], [3, 0, 0])
@@ -171,7 +173,8 @@ def test_labels_deletions_graphs_and_printed_text(tmp_path):
     """)
     _, rec = record(tmp_path, prog, fps=10)
     texts = rec["tag"].text
-    assert texts[0] == "t = 0" and texts[-1] == "t = 0.9"
+    assert texts[0] == "t = 0" and texts[-2] == "t = 0.9"
+    assert texts[-1] == "t = 1.0"        # the scene the program left: a frame at its end
     assert rec["tag"].kind == "label"
     gone = rec["gone"] if "gone" in rec else rec.of_kind("box")[0]
     assert gone.deleted is not None

@@ -31,6 +31,37 @@ def _vec(values) -> vp.vector:
     return vp.vector(*(float(v) for v in values))
 
 
+def _canvas(cfg: Config):
+    """VPython's scene set up as the config's canvas and camera."""
+    scene = vp.scene
+    scene.width, scene.height = cfg.scene.width, cfg.scene.height
+    scene.background = _vec(cfg.scene.background)
+    scene.title = html.escape(cfg.scene.title)
+    cam = cfg.camera
+    scene.center, scene.forward, scene.up = _vec(cam.center), _vec(cam.forward), _vec(cam.up)
+    scene.fov = cam.fov
+    if cam.range is not None:
+        scene.range = cam.range
+    return scene
+
+
+def _objects(cfg: Config, system) -> tuple[dict, dict, list]:
+    """A box on each fixed node, a sphere on each free one, a helix on each spring."""
+    holders = {int(n): vp.box(pos=_vec(system.pos[n]), size=_vec(cfg.holder.size),
+                              color=_vec(cfg.holder.color))
+               for n in np.flatnonzero(system.fixed)}
+    balls = {int(n): vp.sphere(pos=_vec(system.pos[n]), radius=cfg.ball.radius,
+                               color=_vec(cfg.ball.color))
+             for n in system.free}
+    sc = cfg.spring
+    springs = [(int(i), int(j), vp.helix(pos=_vec(system.pos[i]),
+                                         axis=_vec(system.pos[j] - system.pos[i]),
+                                         radius=sc.radius, thickness=sc.thickness,
+                                         coils=sc.coils, color=_vec(sc.color)))
+               for i, j in zip(system.i, system.j)]
+    return holders, balls, springs
+
+
 def record_scene(cfg: Config, out: Path, *, duration: float | None = None,
                  fps: int | None = None, speed: float | None = None,
                  version: str = "") -> int:
@@ -49,27 +80,9 @@ def record_scene(cfg: Config, out: Path, *, duration: float | None = None,
         raise UserError(f"--duration {r.duration:g} at --fps {r.fps} gives no frame")
     system = build.system(cfg)
     vp.reset()
-    scene = vp.scene
-    scene.width, scene.height = cfg.scene.width, cfg.scene.height
-    scene.background = _vec(cfg.scene.background)
-    scene.title = html.escape(cfg.scene.title)
-    cam = cfg.camera
-    scene.center, scene.forward, scene.up = _vec(cam.center), _vec(cam.forward), _vec(cam.up)
-    scene.fov = cam.fov
-    if cam.range is not None:
-        scene.range = cam.range
-    holders = {int(n): vp.box(pos=_vec(system.pos[n]), size=_vec(cfg.holder.size),
-                              color=_vec(cfg.holder.color))
-               for n in np.flatnonzero(system.fixed)}
-    balls = {int(n): vp.sphere(pos=_vec(system.pos[n]), radius=cfg.ball.radius,
-                               color=_vec(cfg.ball.color))
-             for n in system.free}
+    scene = _canvas(cfg)
+    holders, balls, springs = _objects(cfg, system)
     sc = cfg.spring
-    springs = [(int(i), int(j), vp.helix(pos=_vec(system.pos[i]),
-                                         axis=_vec(system.pos[j] - system.pos[i]),
-                                         radius=sc.radius, thickness=sc.thickness,
-                                         coils=sc.coils, color=_vec(sc.color)))
-               for i, j in zip(system.i, system.j)]
     rest = {n: system.pos[n].copy() for n in holders}
     recorder = Recorder(out, r.fps / r.speed, program=cfg.scene.title,
                         dialect="springscene config", version=version)

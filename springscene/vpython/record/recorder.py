@@ -188,9 +188,11 @@ class Recorder:
 
     # -- a frame -------------------------------------------------------------------------
 
-    def take(self) -> None:
-        """Record the scene as it is now, as frame ``frames`` at ``frames / fps`` s."""
-        line: dict[str, Any] = {"frame": self.frames, "t": self.frames / self.fps}
+    def take(self, t: float | None = None) -> None:
+        """Record the scene as it is now, as frame ``frames`` at ``t`` (default: the
+        frame's time on the video's clock, ``frames / fps`` s)."""
+        line: dict[str, Any] = {"frame": self.frames,
+                                "t": self.frames / self.fps if t is None else t}
         cvs = self._canvases()
         if cvs:
             line["canvases"] = cvs
@@ -420,10 +422,13 @@ class Recorder:
         if not self._file.closed:
             with contextlib.suppress(OSError):
                 self._file.close()
+        with contextlib.suppress(OSError):
+            self._raw.close()
 
     def _close(self) -> None:
         try:
-            self._file.close()
+            self._file.close()       # a GzipFile leaves the file under it open
+            self._raw.close()
         except OSError as exc:
             raise OutputError(f"{self.path}: cannot write the recording "
                               f"({exc.strerror or exc})") from None

@@ -18,7 +18,7 @@ from ...errors import UserError
 from ...outputs import VIDEO_FORMATS, check_output, check_video_fps
 from ..geometry.lod import LevelOfDetail, coarser
 
-DATA_FORMATS = (".jsonl",)       # outputs that are the run's recording, no picture
+DATA_FORMATS = (".jsonl", ".html")   # the run's recording, or its interactive page: no video
 FORMATS = VIDEO_FORMATS + (".png",) + DATA_FORMATS
 RECORD_SUFFIXES = (".jsonl", ".jsonl.gz")
 DEFAULT_FPS = 50

@@ -13,8 +13,10 @@ runs this in a child process that owns nothing (:mod:`.supervise`, :mod:`.child`
 from __future__ import annotations
 
 import contextlib
+import errno
 import importlib.metadata
 import os
+import tempfile
 import sys
 import time
 import traceback
@@ -35,6 +37,7 @@ from ..draw import autoscale
 from ..page import graph_images
 from ..page.film import Film, Printed
 from ..page.html_page import write_page
+from ..page.interactive import write_interactive_page
 from ..record.recorder import Recorder
 from .options import DATA_FORMATS, DEFAULT_DURATION, RunOptions, check_request
 from .session import ProgramSession
@@ -140,7 +143,7 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     given = dict(names)
     with contextlib.ExitStack() as files:
         tmp = files.enter_context(atomic_path(out))
-        recorder = _recorder(files, path, out, tmp, options, dialect, still, data_only)
+        recorder = _recorder(files, path, out, tmp, options, dialect, still)
         film = Film(None if still or data_only else tmp, options.fps, options.overlays,
                     options.backend, options.antialias, on_frame, options.canvas_only,
                     quality=options.quality, lod=options.level_of_detail())
@@ -156,28 +159,39 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
             film.close(False)
             raise
         attachments.update()      # the render after the program's last step
-        _last_frames(film, recorder, timeline, tmp, still, data_only)
+        _last_frames(film, recorder, timeline, tmp, still, data_only, ended)
         frames = (1 if still else recorder.frames if data_only else film.frames)
         result = ProgramResult(out, frames, options.fps,
                                timeline.seconds, time.perf_counter() - start, ended,
                                size=film.writer.size if film.writer is not None else film.size,
                                dialect=dialect.name)
         if recorder is not None:
-            recorder.close(_end(recorder, timeline, ended, names, given))
-            if options.record is not None:
-                result.recording = Path(options.record)
-    if not data_only:
-        result.images = images + _write_extras(out, result, options.page, still,
-                                               film.printed.text(), options.canvas_only)
+            _close_recording(recorder, result, options, tmp,
+                             _end(recorder, timeline, ended, names, given))
+        if not data_only:
+            result.images = images + _write_extras(out, result, options.page, still,
+                                                   film.printed.text(), options.canvas_only,
+                                                   recorder)
     result.notes = ([] if data_only else film.notes) + widgets.notes() + _timing_notes(
-        timeline, options.fps, ended, options.duration)
+        timeline, options.fps, ended, options.duration) + result.notes
     return result
 
 
+def _close_recording(recorder: Recorder, result: ProgramResult, options: RunOptions,
+                     tmp: Path, end: dict) -> None:
+    """The recording finished with its ``end`` line; an ``.html`` output is its page."""
+    recorder.close(end)
+    if options.record is not None:
+        result.recording = Path(options.record)
+    if result.path.suffix.lower() == ".html":
+        write_interactive_page(recorder.path, tmp, widgets=widgets.widgets_in_order())
+
+
 def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeline,
-                 tmp: Path, still: bool, data_only: bool) -> None:
+                 tmp: Path, still: bool, data_only: bool, ended: str) -> None:
     """The end of the run's pictures: a still's one picture; a video of a program that
-    never called ``rate`` is its final scene (and so is its recording)."""
+    never called ``rate`` is its final scene. The recording also keeps the scene as the
+    program left it, when it ended after the last frame (what VPython's page shows then)."""
     try:
         if still:
             picture = film.still()
@@ -185,20 +199,30 @@ def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeli
             film.size = (picture.shape[1], picture.shape[0])
         elif film.frames == 0 and not data_only:
             film.take()
-        if recorder is not None and (recorder.frames == 0 or timeline.frames == 0):
-            recorder.take()
+        if recorder is not None and (recorder.frames == 0 or (
+                ended == "program" and timeline.seconds > (recorder.frames - 1) / recorder.fps)):
+            autoscale.at_render()         # the browser's renders after the program's end
+            recorder.take(timeline.seconds if recorder.frames else 0.0)
     finally:
         film.close(True)
 
 
 def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
-              options: RunOptions, dialect, still: bool, data_only: bool) -> Recorder | None:
-    """The run's recorder, when the run keeps one: the output itself (``.jsonl``) or
-    ``--record``'s file, moved into place whole when the run ends well."""
-    if data_only:
+              options: RunOptions, dialect, still: bool) -> Recorder | None:
+    """The run's recorder, when the run keeps one: the output itself (``.jsonl``),
+    ``--record``'s file (moved into place whole when the run ends well), or a hidden file
+    beside ``out`` for the interactive page (``.html``, and the page beside a video),
+    removed at the end."""
+    suffix = out.suffix.lower()
+    if suffix == ".jsonl":
         target = tmp
     elif options.record is not None:
         target = files.enter_context(atomic_path(Path(options.record)))
+    elif suffix == ".html" or (options.page and not still):
+        fd, name = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".jsonl", dir=out.parent)
+        os.close(fd)
+        target = Path(name)
+        files.callback(target.unlink, missing_ok=True)
     else:
         return None
     recorder = Recorder(target, options.fps, path.name, dialect.name, _version())
@@ -335,17 +359,32 @@ def _run(code: types.CodeType, names: dict, path: Path, limit: str) -> str:
 
 
 def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
-                  printed: str = "", canvas_only: bool = False) -> list[Path]:
-    """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``."""
+                  printed: str = "", canvas_only: bool = False,
+                  recorder: Recorder | None = None) -> list[Path]:
+    """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``:
+    a video's interactive page (GlowScript replaying the recording, the video linked), or,
+    for a still or where GlowScript's library cannot be had, the page with the picture."""
     written = list(graph_images.write_images(graphs(), out.parent, out.stem)) if graphs() else []
-    if page:
-        cv = next((c for c in canvases() if c._objects), canvas.get_selected())
-        kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
-        result.page = write_page(out.with_suffix(".html"), title_html=cv.title,
-                                 caption_html=cv.caption, media=out.name, media_kind=kind,
-                                 width=result.size[0] if result.size else int(cv.width),
-                                 height=result.size[1] if result.size else int(cv.height),
-                                 graph_images=[p.name for p in written],
-                                 widgets=widgets.widgets_in_order(), printed=printed,
-                                 page_video=not canvas_only)
+    if not page:
+        return written
+    html_out = out.with_suffix(".html")
+    if recorder is not None and not still:
+        try:
+            result.page = write_interactive_page(recorder.path, html_out, video=out,
+                                                 widgets=widgets.widgets_in_order())
+            return written
+        except OutputError as exc:
+            if exc.errno != errno.ENETUNREACH:       # not the library: a write that failed
+                raise
+            result.notes.append(f"{html_out.name} shows the video, not the interactive "
+                                f"page: {exc.reason}")
+    cv = next((c for c in canvases() if c._objects), canvas.get_selected())
+    kind = "image" if still else ("gif" if out.suffix.lower() == ".gif" else "video")
+    result.page = write_page(html_out, title_html=cv.title,
+                             caption_html=cv.caption, media=out.name, media_kind=kind,
+                             width=result.size[0] if result.size else int(cv.width),
+                             height=result.size[1] if result.size else int(cv.height),
+                             graph_images=[p.name for p in written],
+                             widgets=widgets.widgets_in_order(), printed=printed,
+                             page_video=not canvas_only)
     return written
