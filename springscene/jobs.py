@@ -15,6 +15,7 @@ science and drawing:
 from __future__ import annotations
 
 import json
+import time
 from typing import Callable
 from pathlib import Path
 
@@ -31,6 +32,7 @@ from .science import analysis, matter
 from .science import sweep as sweeps
 from .errors import UserError
 from .settings import Config
+from .vpython.page.scene_recording import write_scene_page
 from .vpython.run.options import RunOptions
 from .vpython.run.runner import ProgramResult, run_program
 from .vpython.run.supervise import run_supervised
@@ -56,7 +58,18 @@ def still(cfg: Config, time_s: float = 0.0, out: str | Path | None = None, *,
 
 
 def render(cfg: Config, out: str | Path, **options) -> pipeline.RenderStats:
-    """The motion as MP4, WebM, Ogg or GIF (options: :func:`springscene.render.render_video`'s)."""
+    """The motion as MP4, WebM, Ogg or GIF (options: :func:`springscene.render.render_video`'s),
+    or as ``.html``: the interactive VPython page of the scene (its holder, spring and ball
+    as VPython's box, helix and sphere, drawn by GlowScript; options ``duration``, ``fps``
+    and ``speed``, the others being the video's)."""
+    if str(out).lower().endswith(".html"):
+        path = check_output(out, (".html",))
+        start = time.perf_counter()
+        frames = write_scene_page(cfg, path, duration=options.get("duration"),
+                                  fps=options.get("fps"), speed=options.get("speed"))
+        seconds = time.perf_counter() - start
+        fps = options.get("fps") or cfg.render.fps
+        return pipeline.RenderStats(path, frames, fps, seconds, seconds)
     return pipeline.render_video(cfg, out, **options)
 
 

@@ -130,7 +130,9 @@ def _add_picture_commands(sub) -> None:
                    help="simulated seconds per video second (default: the config's, "
                         "1 = real time)")
     s.add_argument("--out", required=True,
-                   help="video.mp4, .webm (VP9), .ogv (Theora: both upload to a wiki) or .gif")
+                   help="video.mp4, .webm (VP9), .ogv (Theora: both upload to a wiki), .gif, "
+                   "or page.html: the scene as an interactive VPython page (GlowScript "
+                   "draws it; turn, zoom, play and seek in any browser, from disk)")
     s.add_argument("--quiet", action="store_true", help="no progress bar")
     s.add_argument("--overlay", metavar="LIST",
                    help="comma list of: " + ", ".join(OVERLAYS)

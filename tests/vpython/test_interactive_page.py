@@ -437,3 +437,67 @@ def test_mid_run_the_replayed_canvas_is_springscenes_still_at_that_time(browser,
           f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
     assert de.mean() <= 2 and (de > 5).mean() <= 0.01
     assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
+
+
+# ---- the page's own scene, from its config ------------------------------------------------
+
+def test_a_configs_scene_is_recorded_as_vpythons_box_helix_and_sphere(tmp_path):
+    """``springscene render wiki.toml --out wiki.html``'s recording: the ball where the
+    physics puts it at every frame, the spring along ball.pos - holder.pos."""
+    from springscene import config, render
+    from springscene.model.timeline import frame_steps
+    from springscene.vpython.page.scene_recording import record_scene
+
+    cfg = config.load(ROOT / "configs" / "wiki.toml")
+    frames = record_scene(cfg, tmp_path / "wiki.jsonl", duration=2.0)
+    run = reader.read(tmp_path / "wiki.jsonl")
+    steps = frame_steps(2.0, cfg.render.fps, cfg.physics.dt)
+    assert frames == run.frames == len(steps) == 100
+    traj = render.simulate(cfg, 2.0)
+    assert np.array_equal(run["ball"].pos, traj.pos[steps])
+    assert np.array_equal(run["spring"].axis, run["ball"].pos - run["holder"].pos)
+    assert [run[n].kind for n in ("holder", "spring", "ball")] == ["box", "helix", "sphere"]
+    assert run["spring"].first["coils"] == 15 and run["ball"].first["size"] == [0.05] * 3
+    cv = run.canvases[0]
+    assert (cv["width"], cv["height"], cv["title"]) == (900, 600,
+                                                        "Ball and Spring Model of Matter")
+    assert cv["range"] == pytest.approx(0.1790085296108589)    # VPython's autoscale
+
+
+def test_render_to_html_writes_the_page_and_refuses_a_lattice(tmp_path, cli, glow):
+    proc = cli("render", ROOT / "configs" / "wiki.toml", "--out", tmp_path / "wiki.html",
+               "--duration", "1")
+    assert proc.returncode == 0 and "wrote" in proc.stdout, proc.stderr
+    page = (tmp_path / "wiki.html").read_text()
+    assert "<title>Ball and Spring Model of Matter</title>" in page and "glow.min.js" in page
+    assert [p.name for p in tmp_path.iterdir()] == ["wiki.html"]        # nothing left
+    proc = cli("render", ROOT / "configs" / "crystal.toml", "--out", tmp_path / "c.html")
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "lattice" in proc.stderr
+    assert not (tmp_path / "c.html").exists()
+
+
+@pytest.mark.slow
+def test_the_wiki_page_is_springscenes_still(browser, tmp_path, cli):
+    """The wiki config's page at t = 0.5 s against ``springscene still --time 0.5`` (below
+    the title band the still draws into its picture): the same scene, drawn by GlowScript."""
+    cfg = ROOT / "configs" / "wiki.toml"
+    cli("render", cfg, "--out", tmp_path / "wiki.html", "--duration", "1", check=True)
+    cli("still", cfg, "--time", "0.5", "--out", tmp_path / "still.png", check=True)
+    browser.open(tmp_path / "wiki.html")
+    browser.js("window.springscene.seek(25)")
+    picture = browser.canvas_picture()[40:]
+    still = np.asarray(Image.open(tmp_path / "still.png").convert("RGB"))[40:]
+    de = imagediff.ciede2000(picture, still)
+
+    def by_colour(im):
+        r, g, b = (im[..., i].astype(int) for i in range(3))
+        return {"ball": (r > 120) & (g < 90) & (b < 90),
+                "spring": (g > 120) & (b > 120) & (r < 110),
+                "holder": (abs(r - g) < 12) & (abs(g - b) < 12) & (r < 200)}
+
+    ours, theirs = by_colour(picture), by_colour(still)
+    ious = {k: imagediff.iou(ours[k], theirs[k]) for k in ours}
+    print(f"wiki page at 0.5 s: IoU {ious}; mean ΔE00 {de.mean():.2f}; "
+          f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
+    assert de.mean() <= 2 and (de > 5).mean() <= 0.01
+    assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95

@@ -12,6 +12,8 @@ recorded (:mod:`..record.recorder`) frame by frame.
 from __future__ import annotations
 
 import html
+import os
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -23,8 +25,9 @@ from ...settings import Config
 from .. import api as vp
 from ..draw import autoscale
 from ..record.recorder import Recorder
+from .interactive import write_interactive_page
 
-__all__ = ["record_scene"]
+__all__ = ["record_scene", "write_scene_page"]
 
 
 def _vec(values) -> vp.vector:
@@ -110,3 +113,21 @@ def record_scene(cfg: Config, out: Path, *, duration: float | None = None,
     finally:
         recorder.discard()
     return recorder.frames
+
+
+def write_scene_page(cfg: Config, out: Path, *, duration: float | None = None,
+                     fps: int | None = None, speed: float | None = None,
+                     version: str = "") -> int:
+    """The interactive page of ``cfg``'s scene at ``out``; the number of frames. The
+    recording is made in a hidden file beside ``out`` and removed."""
+    out = Path(out)
+    fd, name = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".jsonl", dir=out.parent or ".")
+    os.close(fd)
+    recording = Path(name)
+    try:
+        frames = record_scene(cfg, recording, duration=duration, fps=fps, speed=speed,
+                              version=version)
+        write_interactive_page(recording, out)
+    finally:
+        recording.unlink(missing_ok=True)
+    return frames
