@@ -22,10 +22,12 @@ Examples
 from __future__ import annotations
 
 import gzip
+import json
 import os
 import shutil
 import sys
 import tempfile
+import weakref
 from collections.abc import Mapping
 from dataclasses import replace as _replace
 from importlib import resources
@@ -80,8 +82,11 @@ def _starter(name: str):
 def _summary(entry) -> str:
     """A starter's first line of description: its leading comment or docstring."""
     text = entry.read_text(encoding="utf-8")
-    if entry.name.endswith(".ipynb"):
-        return "a Jupyter notebook: the Python API (load, replace, simulate, still, render)"
+    if entry.name.endswith(".ipynb"):       # its first markdown cell's heading
+        cells = json.loads(text).get("cells", [])
+        first = next((c for c in cells if c.get("cell_type") == "markdown"), None)
+        heading = "".join(first["source"]).splitlines()[0] if first else ""
+        return "a Jupyter notebook: " + heading.lstrip("#").strip()
     for line in text.splitlines():
         line = line.strip().lstrip("#").strip().strip('"').strip()
         if line and not line.startswith(("!", "from ", "import ")):
@@ -504,13 +509,19 @@ def _as_data(program, record, run_options: dict) -> Run:
     """The program run to a recording alone in a temporary folder, read back (and kept in
     ``record``, when given)."""
     check_record(record)
-    with tempfile.TemporaryDirectory(prefix="springscene-run-") as folder:
-        scratch = Path(folder) / "run.jsonl"
+    folder = Path(tempfile.mkdtemp(prefix="springscene-run-"))
+    try:
+        scratch = folder / "run.jsonl"
         result = jobs.vpython(program, scratch, **run_options)
         recording = read_recording(scratch)
         if record is not None:
             _keep(scratch, Path(record))
-    return Run(recording, result, record)
+    except BaseException:
+        shutil.rmtree(folder, ignore_errors=True)
+        raise
+    run = Run(recording, result, record, source=scratch)
+    weakref.finalize(run, shutil.rmtree, folder, True)   # the scratch copy, for its page
+    return run
 
 
 def _keep(recording: Path, target: Path) -> None:

@@ -19,6 +19,8 @@ import numpy as np
 
 from . import jobs
 from .settings import Config
+from .vpython.page import glow_library, interactive
+from .vpython.page.replay_data import replay_data
 from .vpython.record import trace
 from .vpython.record.reader import Recording, Series, Snapshot
 
@@ -118,6 +120,7 @@ class Video:
         self.result = result
         self.path = Path(result.path)
         self.run = run            # a VPython run kept with record=: its Run; else None
+        self.show_page = True     # a VPython video run: a notebook shows its interactive page
 
     def __getattr__(self, name: str) -> Any:
         if name in ("result", "run"):
@@ -134,12 +137,41 @@ class Video:
             return f"data:{mime};base64,{data}"
         return html.escape(os.path.relpath(self.path))
 
+    def as_video(self) -> "Video":
+        """The same result shown as its video in a notebook (not as its page)."""
+        shown = Video(self.result, self.run)
+        shown.show_page = False
+        return shown
+
+    def _interactive_page(self) -> str | None:
+        """The run's interactive page, if it has one: the output itself (``.html``) or the
+        page beside its video (not the picture page of a still)."""
+        page = self.path if self.path.suffix.lower() == ".html" else getattr(
+            self.result, "page", None)
+        if page is None or not Path(page).is_file():
+            return None
+        text = Path(page).read_text(encoding="utf-8")
+        return text if "glow.min.js" in text else None
+
     def _repr_html_(self) -> str:
+        page = self._interactive_page() if self.show_page else None
+        if page is not None:
+            size = getattr(self.result, "size", None)
+            return page_frame(page, (size[1] if size else 600) + 160)
         if self.path.suffix.lower() in (".gif", ".png"):
             return f'<img src="{self._src()}" alt="{html.escape(self.path.name)}"/>'
         mime = MIME.get(self.path.suffix.lower(), "")
         return (f'<video controls loop muted playsinline><source src="{self._src()}" '
                 f'type="{mime}">{html.escape(self.path.name)}</video>')
+
+
+def page_frame(page: str, height: int) -> str:
+    """A whole HTML page shown inline in a notebook: an iframe holding it (``srcdoc``), its
+    scripts run in the frame's own sandbox, away from the notebook's page (Jupyter,
+    JupyterLab and Colab alike; no extension, no server)."""
+    return (f'<iframe srcdoc="{html.escape(page, quote=True)}" '
+            f'style="width: 100%; height: {int(height)}px; border: 0; resize: vertical" '
+            'sandbox="allow-scripts allow-popups"></iframe>')
 
 
 class Analysis(dict):
@@ -257,8 +289,11 @@ class Run:
     """
 
     def __init__(self, recording: Recording, result: Any = None,
-                 kept: str | Path | None = None) -> None:
+                 kept: str | Path | None = None, source: str | Path | None = None) -> None:
         self._recording = recording
+        # the recording's file, for the page (kept, or a scratch copy the caller owns)
+        self._source = Path(source) if source is not None else (
+            Path(kept) if kept is not None else None)
         self.result = result
         self.recording = Path(kept) if kept is not None else None
         self.objects = Objects(recording.objects)
@@ -322,4 +357,22 @@ class Run:
                 f"by {self.ended}; {len(self.objects)} object{'s' * (len(self.objects) != 1)} "
                 f"({named}); {graphs}>")
 
-    # (a notebook's view of a run, _repr_html_, is to come: the page that replays it)
+    def page_html(self) -> str:
+        """The run's interactive page (GlowScript replaying it), as one HTML document."""
+        if self._source is None or not self._source.exists():
+            raise ValueError(f"{self.program}: the run's recording is gone; keep it with "
+                             "record= to show its page")
+        return interactive.page_html(replay_data(self._source), glow_library.library())
+
+    def _repr_html_(self) -> str:
+        """In Jupyter, JupyterLab and Colab: the interactive page, inline."""
+        try:
+            page = self.page_html()
+        except (ValueError, OSError) as exc:        # no recording, or no GlowScript
+            return f"<pre>{html.escape(repr(self))}\n({html.escape(str(exc))})</pre>"
+        return page_frame(page, self._page_height())
+
+    def _page_height(self) -> int:
+        shown = [c for c in self.canvases if c.get("visible", True)]
+        return (60 + sum(int(c.get("height", 400)) + 80 for c in shown)
+                + sum(int(g.record.get("height", 400)) + 20 for g in self.graphs) + 60)

@@ -176,3 +176,26 @@ def test_make_refuses_a_python_older_than_3_10_and_keeps_the_venv():
     assert proc.returncode != 0
     assert "springscene needs Python 3.10 or newer" in proc.stdout
     assert (ROOT / ".venv" / "bin" / "python").exists()
+
+
+def test_the_vpython_notebook_runs(home):
+    """springscene init vpython.ipynb, then every cell run by a kernel: the %%vpython cells
+    show the interactive page (GlowScript's library inline in an iframe) or, with --video,
+    the video; the testing API measures the wiki spring's period."""
+    import nbclient
+    import nbformat
+
+    proc = springscene_cli(home, "init", "vpython.ipynb")
+    assert proc.returncode == 0, proc.stderr
+    nb = nbformat.read(home / "vpython.ipynb", as_version=4)
+    nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
+                            resources={"metadata": {"path": str(home)}}).execute()
+    outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
+    assert not [o for o in outputs if o.output_type == "error"]
+    shown = [o.data["text/html"] for o in outputs if "text/html" in o.get("data", {})]
+    pages = [h for h in shown if h.startswith("<iframe srcdoc=") and "glow.min.js" in h]
+    videos = [h for h in shown if "<video" in h and "data:video/mp4;base64," in h]
+    assert len(pages) == 3 and len(videos) == 1
+    printed = "".join(o.get("text", "") for o in outputs if o.output_type == "stream")
+    measured, expected = (float(x) for x in re.findall(r"([\d.]+) s", printed)[:2])
+    assert abs(measured / expected - 1) < 0.02, printed

@@ -501,3 +501,25 @@ def test_the_wiki_page_is_springscenes_still(browser, tmp_path, cli):
           f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
     assert de.mean() <= 2 and (de > 5).mean() <= 0.01
     assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
+
+
+@pytest.mark.slow
+def test_the_page_runs_inside_a_notebooks_sandboxed_frame(browser, tmp_path, spring_page):
+    """What a notebook shows (springscene.results.page_frame): the whole page in an iframe's
+    srcdoc, sandboxed; GlowScript draws there and the player works."""
+    from springscene.results import page_frame
+
+    outer = tmp_path / "notebook.html"
+    outer.write_text("<html><body><h1>a notebook</h1>"
+                     + page_frame(spring_page.read_text(encoding="utf-8"), 900)
+                     + "</body></html>", encoding="utf-8")
+    browser.driver.get(outer.resolve().as_uri())
+    try:
+        browser.driver.switch_to.frame(0)
+        browser.wait("return !!(window.springscene && window.springscene.ready)", 30)
+        browser.js("window.springscene.pause(); window.springscene.seek(10)")
+        picture = browser.canvas_picture()
+        drawn = (picture != picture[0, 0]).any(axis=2)       # anything on the background
+        assert drawn.sum() > 1000 and browser.js("return window.springscene.frame()") == 10
+    finally:
+        browser.driver.switch_to.default_content()
