@@ -76,7 +76,7 @@ def test_wiki_program_writes_video_and_page(tmp_path):
     assert sum(1 for _ in reader) == 25
     page = (tmp_path / "wiki.html").read_text()            # named after the video
     assert "<title>Ball and Spring Model of Matter</title>" in page
-    assert 'src="wiki.mp4"' in page and "&lt;0, -9.8, 0&gt;" in page
+    assert 'href="wiki.mp4"' in page and "glow.min.js" in page    # the page, the video linked
     assert sorted(p.name for p in tmp_path.iterdir()) == ["wiki.html", "wiki.mp4"]
 
 

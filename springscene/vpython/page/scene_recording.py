@@ -121,7 +121,10 @@ def write_scene_page(cfg: Config, out: Path, *, duration: float | None = None,
     """The interactive page of ``cfg``'s scene at ``out``; the number of frames. The
     recording is made in a hidden file beside ``out`` and removed."""
     out = Path(out)
-    fd, name = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".jsonl", dir=out.parent or ".")
+    stem = out.name
+    while len(os.fsencode(stem)) > 200:          # room for the rest of the name
+        stem = stem[:-1]
+    fd, name = tempfile.mkstemp(prefix=f".{stem}.", suffix=".jsonl", dir=out.parent or ".")
     os.close(fd)
     recording = Path(name)
     try:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import errno
 import gzip
 import io
 import itertools
@@ -24,6 +25,7 @@ from typing import Any
 import numpy as np
 
 from ...errors import OutputError
+from ...video import reason_of
 from ..api.graphs import GraphSeries, graph, graphs
 from ..core.canvases import canvases
 from ..core.vectors import vector
@@ -155,8 +157,7 @@ class Recorder:
         try:
             raw = open(self.path, "wb")
         except OSError as exc:
-            raise OutputError(f"{self.path}: cannot write the recording "
-                              f"({exc.strerror or exc})") from None
+            raise OutputError(reason_of(exc), self.path, exc.errno or errno.EIO) from None
         self._file = (io.TextIOWrapper(gzip.GzipFile(fileobj=raw, mode="wb", mtime=0),
                                        encoding="utf-8")
                       if self.path.suffix == ".gz" else io.TextIOWrapper(raw, encoding="utf-8"))
@@ -430,16 +431,14 @@ class Recorder:
             self._file.close()       # a GzipFile leaves the file under it open
             self._raw.close()
         except OSError as exc:
-            raise OutputError(f"{self.path}: cannot write the recording "
-                              f"({exc.strerror or exc})") from None
+            raise OutputError(reason_of(exc), self.path, exc.errno or errno.EIO) from None
 
     def _write(self, line: dict) -> None:
         try:
             self._file.write(json.dumps(line, separators=(",", ":"), allow_nan=False))
             self._file.write("\n")
         except OSError as exc:
-            raise OutputError(f"{self.path}: cannot write the recording "
-                              f"({exc.strerror or exc})") from None
+            raise OutputError(reason_of(exc), self.path, exc.errno or errno.EIO) from None
 
     def names(self, namespace: dict) -> tuple[dict, dict]:
         """The program's global names that hold recorded objects (or lists of them), and

@@ -219,7 +219,10 @@ def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
     elif options.record is not None:
         target = files.enter_context(atomic_path(Path(options.record)))
     elif suffix == ".html" or (options.page and not still):
-        fd, name = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".jsonl", dir=out.parent)
+        stem = out.name
+        while len(os.fsencode(stem)) > 200:      # room for the rest of the name
+            stem = stem[:-1]
+        fd, name = tempfile.mkstemp(prefix=f".{stem}.", suffix=".jsonl", dir=out.parent)
         os.close(fd)
         target = Path(name)
         files.callback(target.unlink, missing_ok=True)
