@@ -523,3 +523,30 @@ def test_the_page_runs_inside_a_notebooks_sandboxed_frame(browser, tmp_path, spr
         assert drawn.sum() > 1000 and browser.js("return window.springscene.frame()") == 10
     finally:
         browser.driver.switch_to.default_content()
+
+
+@pytest.mark.slow
+def test_a_hostile_programs_page_runs_none_of_its_text(browser, tmp_path):
+    """A program that prints, titles, captions, labels and plots ``</script>`` and HTML,
+    run to its page by springscene itself: nothing it wrote runs; its text shows as text."""
+    prog = tmp_path / "hostile.py"
+    prog.write_text(
+        "from vpython import *\n"
+        f"evil = {INJECTION!r} + '<img src=x onerror=\"window.pwned=7\">'\n"
+        "scene.title = evil\n"
+        "scene.caption = '<svg onload=\"window.pwned=8\"></svg>' + evil\n"
+        "label(pos=vector(0, 1, 0), text=evil)\n"
+        "g = graph(title=evil, xtitle=evil)\n"
+        "c = gcurve(label=evil)\n"
+        "b = sphere(texture=evil)\n"
+        "for i in range(5):\n"
+        "    rate(10)\n"
+        "    print(evil)\n"
+        "    c.plot(i, i)\n")
+    jobs.vpython(prog, tmp_path / "hostile.html", supervised=False, duration=0.5, fps=10)
+    browser.open(tmp_path / "hostile.html")
+    browser.js("window.springscene.seek(window.springscene.frames - 1)")
+    assert browser.js("return window.pwned") is None
+    assert browser.js("return document.querySelectorAll('#vp-page script, #vp-page img, "
+                      "#vp-page svg').length") == 0
+    assert INJECTION in browser.js("return document.querySelector('.vp-print').textContent")
