@@ -145,7 +145,7 @@ class Video:
 
     def _interactive_page(self) -> str | None:
         """The run's interactive page, if it has one: the output itself (``.html``) or the
-        page beside its video (not the picture page of a still)."""
+        page beside its video or still (not the picture page made without GlowScript)."""
         page = self.path if self.path.suffix.lower() == ".html" else getattr(
             self.result, "page", None)
         if page is None or not Path(page).is_file():

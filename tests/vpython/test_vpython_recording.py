@@ -100,7 +100,7 @@ def test_only_what_changed_is_written(tmp_path):
     frames = [line for line in lines(tmp_path / "run.jsonl") if "frame" in line]
     assert [o["kind"] for o in frames[0]["new"]] == ["sphere", "sphere", "box"]
     for line in frames[1:]:
-        assert "new" not in line and "canvases" not in line or line.get("canvases")
+        assert "new" not in line
         assert set(line["set"]) <= {"pos", "color"}
         assert line["set"]["pos"]["ids"] == [0]
         assert numbers(line["set"]["pos"]).shape == (3,)

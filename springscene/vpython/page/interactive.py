@@ -106,7 +106,8 @@ def page_html(data: dict, lib: GlowLibrary, *, video: str | None = None,
         '<div id="vp-player"></div>',
         '<div id="vp-page"></div>',
         '<p id="vp-left-out" class="vp-note"></p>',
-        *([f'<p class="vp-note">The video of this run: <a href="{html.escape(video)}">'
+        *([f'<p class="vp-note">The {_media_word(video)} of this run: '
+           f'<a href="{html.escape(video)}">'
            f"{html.escape(Path(video).name)}</a></p>"] if video else []),
         f'<p class="vp-licence">Drawn by GlowScript, the library of VPython {VERSION} '
         f"(glow.min.js, inlined below under the MIT licence: {html.escape(copyright_line)})"
@@ -121,6 +122,11 @@ def page_html(data: dict, lib: GlowLibrary, *, video: str | None = None,
         "</body>\n</html>\n",
     ]
     return "\n".join(parts)
+
+
+def _media_word(name: str) -> str:
+    """What the run's file linked from the page is: its picture (a still) or its video."""
+    return "picture" if Path(name).suffix.lower() == ".png" else "video"
 
 
 def _asset(name: str) -> str:

@@ -202,7 +202,9 @@ def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeli
         if recorder is not None and (recorder.frames == 0 or (
                 ended == "program" and timeline.seconds > (recorder.frames - 1) / recorder.fps)):
             autoscale.at_render()         # the browser's renders after the program's end
-            recorder.take(timeline.seconds if recorder.frames else 0.0)
+            # at the program's end; a run stopped by its limit shows the last frame time's scene
+            recorder.take(timeline.seconds if ended == "program"
+                          else max(timeline.frames - 1, 0) / timeline.fps)
     finally:
         film.close(True)
 
@@ -211,14 +213,14 @@ def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
               options: RunOptions, dialect, still: bool) -> Recorder | None:
     """The run's recorder, when the run keeps one: the output itself (``.jsonl``),
     ``--record``'s file (moved into place whole when the run ends well), or a hidden file
-    beside ``out`` for the interactive page (``.html``, and the page beside a video),
-    removed at the end."""
+    beside ``out`` for the interactive page (``.html``, and the page beside a video or
+    still), removed at the end."""
     suffix = out.suffix.lower()
     if suffix == ".jsonl":
         target = tmp
     elif options.record is not None:
         target = files.enter_context(atomic_path(Path(options.record)))
-    elif suffix == ".html" or (options.page and not still):
+    elif suffix == ".html" or options.page:
         stem = out.name
         while len(os.fsencode(stem)) > 200:      # room for the rest of the name
             stem = stem[:-1]
@@ -244,10 +246,10 @@ def _frame_taker(film: Film, recorder: Recorder | None, still: bool, data_only: 
                  on_frame: Callable | None):
     """What the clock calls at each frame: the video's frame and the recording's (a
     recording alone tells ``on_frame(index, None)``)."""
+    if still:              # the end is the picture, and the recording's one frame
+        return lambda: None
     if recorder is None:
-        return (lambda: None) if still else film.take
-    if still:
-        return recorder.take
+        return film.take
     if data_only:
         def record() -> None:
             recorder.take()
@@ -365,13 +367,14 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
                   printed: str = "", canvas_only: bool = False,
                   recorder: Recorder | None = None) -> list[Path]:
     """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``:
-    a video's interactive page (GlowScript replaying the recording, the video linked), or,
-    for a still or where GlowScript's library cannot be had, the page with the picture."""
+    the run's interactive page (GlowScript replaying the recording, the video or still
+    linked; a still's page is the scene the program left, to turn and zoom), or, where
+    GlowScript's library cannot be had, the page with the picture."""
     written = list(graph_images.write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if not page:
         return written
     html_out = out.with_suffix(".html")
-    if recorder is not None and not still:
+    if recorder is not None:
         try:
             result.page = write_interactive_page(recorder.path, html_out, video=out,
                                                  widgets=widgets.widgets_in_order())
