@@ -32,7 +32,7 @@ from ..view.overlay import OVERLAYS, parse_overlays
 from ..outputs import check_output
 from ..vpython.record import trace
 from ..vpython.record.reader import read as read_recording
-from ..vpython.run.options import DATA_FORMATS, FORMATS, MAX_LOD_PX
+from ..vpython.run.options import FORMATS, MAX_LOD_PX
 from ..vpython.run.supervise import RunEnded
 from ..vpython.run.report import size_text
 
@@ -353,11 +353,11 @@ def _traces(args: argparse.Namespace) -> list[tuple[str, Path]]:
 @contextlib.contextmanager
 def _trace_recording(args: argparse.Namespace, traces: list):
     """The recording the run keeps: ``--record``'s, none for an ``--out`` that is the
-    recording itself, or, for ``--trace`` alone, a file in a hidden folder beside
+    recording itself (``.jsonl``), or, for ``--trace`` alone, a file in a hidden folder beside
     ``--out`` (on its file system), removed after. The folder is named as the supervised
     run's own (``.OUT.PID.XXXXXXXX.run``), so one left by a springscene killed outright
     goes with theirs, at the next run to that output."""
-    if not traces or args.record is not None or args.out.lower().endswith(DATA_FORMATS):
+    if not traces or args.record is not None or args.out.lower().endswith(".jsonl"):
         yield args.record
         return
     out, name = Path(args.out), Path(args.out).name

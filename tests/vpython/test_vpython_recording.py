@@ -280,3 +280,60 @@ def test_recording_memory_is_bounded(tmp_path):
     recorded = peak("--out", str(tmp_path / "b.mp4"), "--record", str(tmp_path / "b.jsonl"))
     assert read(tmp_path / "b.jsonl").frames == 300
     assert recorded - plain < 50, (plain, recorded)
+
+
+def test_a_label_and_a_solid_changing_colour_in_one_frame(tmp_path):
+    """A label's colours may be unset (the canvas's): recorded as null, then as numbers
+    beside the solids' in the same frame."""
+    prog = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        tag = label(pos=vector(0, 1, 0), text="hi")
+        for i in range(5):
+            rate(10)
+            b.color = vector(i / 10, 0, 0)
+            tag.color = vector(0, i / 10, 0)
+    """)
+    _, rec = record(tmp_path, prog, fps=10)
+    assert rec["tag"].first["color"] is None                 # the canvas's until set
+    assert np.allclose(rec["tag"].color[1:, 1], np.arange(5) / 10)
+    assert np.allclose(rec["b"].color[1:, 0], np.arange(5) / 10)
+
+
+def test_objects_in_a_vpython6_frame_are_recorded_where_they_are_drawn(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        f = frame()
+        inside = box(frame=f, pos=(1, 0, 0))
+        path = curve(pos=[(0, 0, 0), (1, 1, 0)])
+        for i in range(6):
+            rate(10)
+            f.pos.x += 1
+            if i == 3:
+                f.visible = False
+    """)
+    _, rec = record(tmp_path, prog, fps=10)
+    box = rec["inside"]
+    assert np.array_equal(box.pos[:, 0], np.arange(1, 8))      # the world's: 1 + frame's x
+    assert box.visible.tolist() == [1, 1, 1, 1, 0, 0, 0]       # hidden with its frame
+    assert len(rec["path"].points()) == 2                      # a curve after it: recorded
+
+
+def test_a_curves_colour_and_place_change_without_its_points_sent_again(tmp_path):
+    prog = write(tmp_path, """
+        from vpython import *
+        c = curve(pos=[vector(i, 0, 0) for i in range(500)])
+        for i in range(20):
+            rate(10)
+            c.origin = vector(0, i, 0)
+            c.color = vector(1, i / 20, 0)
+            if i == 10:
+                c.modify(3, pos=vector(3, 5, 0))
+    """)
+    _, rec = record(tmp_path, prog, fps=10)
+    changes = [list(line.get("points", {}).values()) for line in lines(tmp_path / "run.jsonl")
+               if "frame" in line]
+    resets = [f for f, c in enumerate(changes) if c and "reset" in c[0]]
+    assert len(resets) == 2                           # made, and the one modify()
+    assert rec["c"].points(resets[1])[3].tolist() == [3, 5, 0]
+    assert rec["c"].origin[-1].tolist() == [0, 19, 0]

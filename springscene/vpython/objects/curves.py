@@ -62,6 +62,7 @@ class _PointList(_Base):
     # changes; while only appends happen, only the new points need measuring
     _appended = 0
     _version = 0
+    _edits = 0          # changes to the point list other than appends (for a recording)
 
     def __init__(self, *args, **kwargs) -> None:
         object.__setattr__(self, "_constructing", True)
@@ -149,7 +150,8 @@ class _PointList(_Base):
         self._dirty = True
 
     def _changed(self) -> None:
-        """A change other than an append: the arrays are made anew."""
+        """A change to the points other than an append: the arrays are made anew."""
+        self._edits += 1
         self._touch()
 
     def append(self, *args, **kwargs) -> None:
@@ -160,6 +162,7 @@ class _PointList(_Base):
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
+        self._edits += 1
         self._touch()
         self._trim()
 

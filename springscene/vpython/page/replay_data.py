@@ -275,6 +275,8 @@ class _Replay:
             obj = self.objects.get(int(oid))
             if obj is not None:
                 value = values[3 * i:3 * i + 3] if dim == 3 else values[i]
+                if dim == 3 and value == [None, None, None]:
+                    value = None            # unset again (a label's colour: the canvas's)
                 obj.set(k, name, value)
 
     def _graphs(self, k: int, g: dict) -> None:

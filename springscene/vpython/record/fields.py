@@ -50,7 +50,7 @@ _KINDS = {
                      "opacity:_opacity:f box:_box:b border:_border:f line:_line:b "
                      "linewidth:_linewidth:f space:_space:f pixel_pos:_pixel_pos:b "
                      "visible:_visible:b text:_text:j font:_font:j align:_align:j "
-                     "color:_color:j background:_background:j linecolor:_linecolor:j"),
+                     "color:_color:v background:_background:v linecolor:_linecolor:v"),
 }
 
 

@@ -29,6 +29,7 @@ from ...video import reason_of
 from ..api.graphs import GraphSeries, graph, graphs
 from ..core.canvases import canvases
 from ..core.vectors import vector
+from ..objects import frames
 from .fields import POINT_KINDS, Schema, schema_of
 
 __all__ = ["Recorder", "FORMAT", "VERSION", "json_value"]
@@ -83,6 +84,8 @@ class _KindTable:
         for f in schema.numeric:
             paths.extend([f"{f.store}._{c}" for c in "xyz"] if f.type == "v" else [f.store])
         self._row_of = operator.attrgetter(*paths) if len(paths) > 1 else None
+        self.visible_col = next((cols.start for f, cols in zip(schema.numeric, schema.columns)
+                                 if f.name == "visible"), None)
 
     def new_row(self) -> int:
         if self.free:
@@ -252,13 +255,15 @@ class Recorder:
             layout = self._layout.get(cid)
             if layout is None or not np.array_equal(layout[0], ids):
                 layout = self._layout[cid] = (ids, self._regroup(cv, cid, layout, deleted))
-            for kind, group in layout[1].items():
-                self._kind_frame(kind, group, cid, new, sets)
-                if kind in POINT_KINDS:
-                    for o, rid in zip(group.objs, group.rids.tolist()):
-                        change = self._point_change(o, rid)
-                        if change:
-                            pts[str(rid)] = change
+            framed = any(getattr(o, "_frame", None) is not None for o in cv._objects)
+            with frames.in_world(cv._objects) if framed else contextlib.nullcontext():
+                for kind, group in layout[1].items():
+                    self._kind_frame(kind, group, cid, new, sets, framed)
+                    if kind in POINT_KINDS:
+                        for o, rid in zip(group.objs, group.rids.tolist()):
+                            change = self._point_change(o, rid)
+                            if change:
+                                pts[str(rid)] = change
         return new, sets, deleted, pts
 
     def _regroup(self, cv, cid: int, layout, deleted: list) -> dict[str, _Group]:
@@ -308,18 +313,24 @@ class Recorder:
                                            for r in rids.tolist()]
         return groups
 
-    def _kind_frame(self, kind: str, group: _Group, cid: int, new: list, sets: dict) -> None:
+    def _kind_frame(self, kind: str, group: _Group, cid: int, new: list, sets: dict,
+                    framed: bool = False) -> None:
         table = self._tables[kind]
         schema = table.schema
         objs, rows, rids, fresh = group.objs, group.rows, group.rids, group.fresh
         cur = table.gather(objs)
+        if framed and table.visible_col is not None:   # VPython 6: a hidden frame hides
+            hidden = np.fromiter(map(frames.hidden, objs), bool, count=len(objs))
+            cur[hidden, table.visible_col] = 0.0
         for i in np.flatnonzero(fresh):
             rec = {"id": int(rids[i]), "kind": kind, "canvas": cid}
             for f, cols in zip(schema.numeric, schema.columns):
                 v = cur[i, cols]
-                rec[f.name] = (_floats(v) if f.type == "v" else
-                               (bool(v[0]) if f.type == "b" and math.isfinite(v[0])
-                                else _floats(v)[0]))
+                if f.type == "v":       # an unset vector (a label's colour) is null
+                    rec[f.name] = _floats(v) if np.isfinite(v).any() else None
+                else:
+                    rec[f.name] = (bool(v[0]) if f.type == "b" and math.isfinite(v[0])
+                                   else _floats(v)[0])
             for f, get in zip(schema.other, group.getters):
                 rec[f.name] = json_value(get(objs[i]))
             new.append(rec)
@@ -358,7 +369,7 @@ class Recorder:
 
     def _point_change(self, o, rid: int) -> dict | None:
         pts = o._pts
-        version, appended, n = o._version, o._appended, len(pts)
+        version, appended, n = o._edits, o._appended, len(pts)
         before = self._points.get(rid)
         self._points[rid] = (version, appended, n)
         if before is None or before[0] != version:
@@ -452,7 +463,8 @@ class Recorder:
             if rid is not None and self._objs.get(id(v)) is v:
                 names[name] = rid
             elif isinstance(v, (list, tuple)) and v and len(v) <= 100_000:
-                ids = [self.record_ids.get(id(x)) for x in v]
+                ids = [self.record_ids.get(id(x)) if self._objs.get(id(x)) is x else None
+                       for x in v]
                 if all(i is not None for i in ids):
                     names[name] = ids
             elif isinstance(v, (bool, int, float, vector, np.floating, np.integer)):

@@ -116,7 +116,7 @@ def check_record(record, out: Path | None = None) -> None:
     if out is None:
         check_output(path, (".jsonl", ".gz"), "--record")
         return
-    if out.suffix.lower() in DATA_FORMATS:
+    if out.suffix.lower() == ".jsonl":
         raise UserError(f"--record {record}: the output {out.name} is the recording already")
     if os.path.abspath(path) == os.path.abspath(out):
         raise UserError(f"--record {record}: the same file as --out")
