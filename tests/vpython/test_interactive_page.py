@@ -158,6 +158,7 @@ def test_a_recording_cut_short_gives_its_whole_frames(tmp_path, glow):
     ("<svg><script>1</script></svg>x<iframe src=y></iframe>", "x"),
     ("a < b & c\n  d", "a &lt; b &amp; c\n  d"),
     ("<!-- x --><!--vpython-widget-3-->", "<!--vpython-widget-3-->"),
+    ('<div style="position: fixed; inset: 0">false page</div>', "<div>false page</div>"),
 ])
 def test_titles_and_captions_keep_formatting_only(markup, kept):
     assert sanitize(markup) == kept
@@ -186,6 +187,16 @@ def test_no_library_and_no_network_is_one_line_naming_what_to_do(monkeypatch, tm
     assert "SPRINGSCENE_GLOW_DIR" in message and "pip download vpython==7.6.5" in message
     assert message.endswith(f"writing {tmp_path / 's.html'}")
     assert not (tmp_path / "s.html").exists()
+    # the next hour's runs say so at once, without asking pip again
+    calls = []
+    monkeypatch.setattr(glow_library.subprocess, "run",
+                        lambda cmd, **kw: calls.append(cmd) or pip_without_network(cmd))
+    with pytest.raises(OutputError, match="failed less than an hour ago"):
+        write_interactive_page(rec, tmp_path / "s.html")
+    assert calls == []
+    with pytest.raises(OutputError, match="could not be downloaded"):
+        glow_library.library(retry=True)                  # the explicit fetch tries again
+    assert len(calls) == 1
 
 
 def test_a_wheel_put_in_the_cache_is_enough(monkeypatch, tmp_path, glow):

@@ -130,7 +130,7 @@
     var rest = "";
     (list || []).forEach(function (w) {
       var mark = "\u003c!--vpython-widget-" + w[0] + "--\u003e";
-      if (w[0] !== null && html.indexOf(mark) >= 0) html = html.replace(mark, w[1]);
+      if (w[0] !== null && html.indexOf(mark) >= 0) html = html.replace(mark, function () { return w[1]; });   // no $& patterns
       else rest += w[1];
     });
     return html + rest;

@@ -22,6 +22,7 @@ the bad-input status 2 of ``UserError``.
 
 from __future__ import annotations
 
+import contextlib
 import errno
 import hashlib
 import importlib.metadata
@@ -30,6 +31,7 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 import zipfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -50,6 +52,7 @@ FILES = {
 _IN_WHEEL = {name: f"vpython/vpython_libraries/{name}" for name in FILES}
 _IN_WHEEL["LICENSE.txt"] = f"vpython-{VERSION}.dist-info/LICENSE.txt"
 _PIP_TIMEOUT_S = 300
+RETRY_AFTER_S = 3600        # after a failed download, runs do not try again for this long
 
 _JS = ("glow.min.js", "jquery.min.js", "jquery-ui.custom.min.js")
 _found: dict[Path, GlowLibrary] = {}      # by cache folder: read once a process
@@ -74,13 +77,16 @@ def cache_dir() -> Path:
     return Path(base) / "springscene" / f"glowscript-{VERSION}"
 
 
-def library(download: bool = True) -> GlowLibrary:
+def library(download: bool = True, retry: bool = False) -> GlowLibrary:
     """GlowScript's library: installed, cached, or downloaded into the cache (above).
 
     Parameters
     ----------
     download : bool
         Whether to download it when it is neither installed nor cached.
+    retry : bool
+        Download even when a download failed less than :data:`RETRY_AFTER_S` ago (without
+        it, every run on a machine with no network would wait for pip to give up).
 
     Raises
     ------
@@ -92,8 +98,36 @@ def library(download: bool = True) -> GlowLibrary:
         found = _installed() or _cached()
         if found is None and not download:
             raise _missing(folder, "not downloaded here")
-        _found[folder] = found or _downloaded()
+        if found is None and not retry and _failed_recently(folder):
+            raise _missing(folder, "the last download failed less than an hour ago; "
+                           "`python -m springscene.vpython.page.glow_library` tries again")
+        _found[folder] = found or _download_noting_failure(folder)
     return _found[folder]
+
+
+def _failure_mark(folder: Path) -> Path:
+    return folder.parent / f".{folder.name}.download-failed"
+
+
+def _failed_recently(folder: Path) -> bool:
+    try:
+        return time.time() - _failure_mark(folder).stat().st_mtime < RETRY_AFTER_S
+    except OSError:
+        return False
+
+
+def _download_noting_failure(folder: Path) -> GlowLibrary:
+    """:func:`_downloaded`; a failure is marked beside the cache (when it can be), so the
+    runs of the next hour say so at once."""
+    try:
+        found = _downloaded()
+    except OutputError:
+        with contextlib.suppress(OSError):
+            folder.parent.mkdir(parents=True, exist_ok=True)
+            _failure_mark(folder).touch()
+        raise
+    _failure_mark(folder).unlink(missing_ok=True)
+    return found
 
 
 def _sha256(data: bytes) -> str:
@@ -232,7 +266,7 @@ def main() -> int:
     """``python -m springscene.vpython.page.glow_library``: get the library into the cache
     now (``make setup`` does), say where it is, or say in one line why it cannot be had."""
     try:
-        print(f"GlowScript's library (vpython {VERSION}): {library().folder}")
+        print(f"GlowScript's library (vpython {VERSION}): {library(retry=True).folder}")
     except OutputError as e:
         print(f"springscene: {e}", file=sys.stderr)
         return 1

@@ -216,6 +216,7 @@ class _Replay:
     printed: list[str] = field(default_factory=list)
     printed_at: list[list[int]] = field(default_factory=list)
     printed_len: int = 0
+    printed_units: int = 0
     end: dict | None = None
 
     def frame(self, rec: dict) -> None:
@@ -300,7 +301,9 @@ class _Replay:
         text = text[:_PRINTED_LIMIT - self.printed_len]
         self.printed.append(text)
         self.printed_len += len(text)
-        self.printed_at.append([k, self.printed_len])
+        # where the text shown at frame k ends, in JavaScript's units (UTF-16: an emoji is 2)
+        self.printed_units += len(text.encode("utf-16-le")) // 2
+        self.printed_at.append([k, self.printed_units])
 
 
 def _graph_value(key: str, value: Any) -> Any:

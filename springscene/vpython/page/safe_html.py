@@ -5,7 +5,7 @@ a file a user may pass on, so it keeps what such HTML is for, formatting, and dr
 could run or fetch anything: :func:`sanitize` keeps the formatting tags of
 :data:`ALLOWED_TAGS` with the harmless attributes of :data:`ALLOWED_ATTRIBUTES` (``href``
 only to ``http``, ``https``, ``mailto`` or ``#``; ``style`` only without ``url(``,
-``expression`` or ``@import``), drops every ``on*`` attribute, drops ``<script>``,
+``expression``, ``@import`` or ``position``), drops every ``on*`` attribute, drops ``<script>``,
 ``<style>``, ``<iframe>``, ``<object>``, ``<svg>`` and the like with all they hold, keeps
 the text of any other tag, and keeps no comment but VPython's widget placeholders.
 Text is written back escaped, so what is left is text and formatting only.
@@ -32,8 +32,10 @@ _DROPPED_WHOLE = frozenset(
     "textarea select title head xmp plaintext noembed noframes".split())
 _VOID = frozenset("br hr".split())
 _SAFE_URL = re.compile(r"^\s*(https?:|mailto:|#)", re.IGNORECASE)
-_BAD_STYLE = re.compile(r"url\s*\(|expression\s*\(|@import|javascript:|behavior\s*:|\\",
-                        re.IGNORECASE)
+# what could fetch or run anything, and ``position`` (a title could lay a false page over
+# the player)
+_BAD_STYLE = re.compile(r"url\s*\(|expression\s*\(|@import|javascript:|behavior\s*:|\\|"
+                        r"position\s*:", re.IGNORECASE)
 _WIDGET_MARK = re.compile(r"^vpython-widget-\d+$")
 
 

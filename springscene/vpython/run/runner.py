@@ -32,7 +32,7 @@ from ..api import attachments
 from ..core import runtime, widgets
 from ..core.canvases import CanvasSizeError, canvas, canvases
 from ..api.graphs import graphs
-from ..dialects import compiling, glowscript
+from ..dialects import compiling, glowscript, visual6
 from ..draw import autoscale
 from ..page import graph_images
 from ..page.film import Film, Printed
@@ -140,7 +140,8 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     start = time.perf_counter()
     images: list[Path] = []
     names = _namespace(path, dialect)
-    given = dict(names)
+    # the names the program is given, not its own (VPython 6's star import brings numpy's)
+    given = {**(visual6.namespace(vp) if dialect.kind == "vpython6" else {}), **names}
     with contextlib.ExitStack() as files:
         tmp = files.enter_context(atomic_path(out))
         recorder = _recorder(files, path, out, tmp, options, dialect, still)

@@ -330,6 +330,8 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path,
         if not sources[target].is_file():
             raise RunEnded(1, f"springscene: {watch.program}: the run reported "
                               f"{target.name} finished but did not write it")
+    if recording is not None:           # --record on another file system: copied there first
+        sources[recording] = _beside(sources[recording], recording)
     with _signals_held():               # all of them in place, or (SIGKILL aside) none
         for target in targets:
             os.replace(sources[target], target)
@@ -343,6 +345,29 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path,
                          dialect=report["dialect"], page=page, recording=recording,
                          images=images, notes=notes,
                          peak_memory=watch.peak)
+
+
+def _beside(source: Path, target: Path) -> Path:
+    """``source`` where an ``os.replace`` onto ``target`` can take it: itself on the same
+    file system, else a hidden copy beside ``target``, flushed to the disk (removed if the
+    copy fails: a write error is one line naming ``target``)."""
+    folder = target.parent if str(target.parent) else Path(".")
+    if os.stat(source).st_dev == os.stat(folder).st_dev:
+        return source
+    fd, name = tempfile.mkstemp(prefix=f"{_hidden(target)}.", suffix=target.suffix,
+                                dir=folder)
+    staged = Path(name)
+    try:
+        with os.fdopen(fd, "wb") as dst, open(source, "rb") as src:
+            shutil.copyfileobj(src, dst)
+            dst.flush()
+            os.fsync(dst.fileno())
+        os.chmod(staged, 0o644)
+    except OSError as exc:
+        staged.unlink(missing_ok=True)
+        raise OutputError(exc.strerror or "cannot write", target, exc.errno or errno.EIO) \
+            from None
+    return staged
 
 
 @contextlib.contextmanager
