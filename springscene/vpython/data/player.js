@@ -427,7 +427,8 @@
     if (left.length) {
       var note = document.getElementById("vp-left-out");
       note.textContent = "Not drawn in this page: " + left.map(function (k) {
-        return data.left_out[k] + " " + k; }).join(", ") + " (the video shows them).";
+        return data.left_out[k] + " " + k; }).join(", ") +
+        " (springscene's video and still of the run draw them).";
     }
     show(0);
     api.ready = true;
