@@ -430,7 +430,7 @@
         return data.left_out[k] + " " + k; }).join(", ") +
         " (springscene's video and still of the run draw them).";
     }
-    show(0);
+    show(data.at_end ? nframes - 1 : 0);       // a still's page opens at its picture
     api.ready = true;
     api.setup_ms = performance.now() - started;
     // playing starts when GlowScript has drawn the first frame (its meshes made), as VPython's

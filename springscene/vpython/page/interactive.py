@@ -52,7 +52,7 @@ _WIDGET_TEXTS = ("text", "prompt", "name")
 
 def write_interactive_page(recording: str | Path, out: str | Path, *,
                            video: str | Path | None = None,
-                           widgets: Iterable[Any] = ()) -> Path:
+                           widgets: Iterable[Any] = (), at_end: bool = False) -> Path:
     """Write the interactive page of a recorded run, atomically.
 
     Parameters
@@ -68,6 +68,8 @@ def write_interactive_page(recording: str | Path, out: str | Path, *,
         The program's controls and wtexts in the order made
         (:func:`..core.widgets.widgets_in_order`, or dicts of the same attributes), shown
         disabled in the canvas's title or caption area as VPython places them.
+    at_end : bool
+        Open at the last frame, paused (a still's page: its picture, then the run).
 
     Returns
     -------
@@ -85,8 +87,8 @@ def write_interactive_page(recording: str | Path, out: str | Path, *,
         lib = library()
     except OutputError as e:
         raise e.at(out) from None
-    text = page_html(replay_data(recording), lib, video=_relative(video, out.parent),
-                     widgets=_widget_areas(widgets))
+    text = page_html({**replay_data(recording), "at_end": at_end}, lib,
+                     video=_relative(video, out.parent), widgets=_widget_areas(widgets))
     with outputs.atomic_path(out) as tmp:
         tmp.write_text(text, encoding="utf-8", newline="\n")
     return out

@@ -247,10 +247,10 @@ def _frame_taker(film: Film, recorder: Recorder | None, still: bool, data_only: 
                  on_frame: Callable | None):
     """What the clock calls at each frame: the video's frame and the recording's (a
     recording alone tells ``on_frame(index, None)``)."""
-    if still:              # the end is the picture, and the recording's one frame
-        return lambda: None
     if recorder is None:
-        return film.take
+        return (lambda: None) if still else film.take
+    if still:                # the picture is the end; the recording keeps the run's frames
+        return recorder.take
     if data_only:
         def record() -> None:
             recorder.take()
@@ -369,7 +369,7 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
                   recorder: Recorder | None = None) -> list[Path]:
     """The program's graphs as PNGs and the page (``out`` named ``.html``) beside ``out``:
     the run's interactive page (GlowScript replaying the recording, the video or still
-    linked; a still's page is the scene the program left, to turn and zoom), or, where
+    linked; a still's page opens at its picture, the scene the program left), or, where
     GlowScript's library cannot be had, the page with the picture."""
     written = list(graph_images.write_images(graphs(), out.parent, out.stem)) if graphs() else []
     if not page:
@@ -378,7 +378,8 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
     if recorder is not None:
         try:
             result.page = write_interactive_page(recorder.path, html_out, video=out,
-                                                 widgets=widgets.widgets_in_order())
+                                                 widgets=widgets.widgets_in_order(),
+                                                 at_end=still)
             return written
         except OutputError as exc:
             if exc.errno != errno.ENETUNREACH:       # not the library: a write that failed
