@@ -311,8 +311,8 @@ def test_what_a_program_prints_is_on_its_page_too(tmp_path):
     proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
     assert proc.returncode == 0, proc.stderr
     assert "KE = 2 J <b>" in proc.stdout                        # to the terminal, as before
-    page = (tmp_path / "x.html").read_text()
-    assert '<pre class="vp-print">KE = 2 J &lt;b&gt;\n</pre>' in page
+    page = (tmp_path / "x.html").read_text()       # the page's data: printed, as text
+    assert '"printed":"KE = 2 J \\u003cb\\u003e\\n"' in page
 
 
 def test_glowscript_leniencies_keep_python_meanings():

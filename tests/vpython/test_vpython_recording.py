@@ -337,3 +337,21 @@ def test_a_curves_colour_and_place_change_without_its_points_sent_again(tmp_path
     assert len(resets) == 2                           # made, and the one modify()
     assert rec["c"].points(resets[1])[3].tolist() == [3, 5, 0]
     assert rec["c"].origin[-1].tolist() == [0, 19, 0]
+
+
+def test_a_page_for_a_huge_scene_is_the_picture_page_with_a_note(tmp_path):
+    """Past PAGE_MAX_OBJECTS the recording made only for the page gives up at once (its
+    memory is not spent): the page shows the picture, and a note says why."""
+    from springscene.vpython.run import runner
+
+    prog = write(tmp_path, f"""
+        from vpython import *
+        scene.width, scene.height = 120, 80
+        for i in range({runner.PAGE_MAX_OBJECTS + 1}):
+            sphere(pos=vector(i % 80, i // 80, 0), radius=0.3)
+    """)
+    result = run_program(prog, tmp_path / "big.png", RunOptions())
+    assert any("more than 5,000 objects" in n for n in result.notes)
+    page = (tmp_path / "big.html").read_text()
+    assert "glow.min.js" not in page and 'src="big.png"' in page
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["big.html", "big.png", "prog.py"]

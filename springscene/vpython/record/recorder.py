@@ -155,8 +155,11 @@ class Recorder:
     """
 
     def __init__(self, path: Path, fps: int, program: str = "", dialect: str = "",
-                 version: str = "") -> None:
+                 version: str = "", max_objects: int | None = None) -> None:
         self.path, self.fps = Path(path), fps
+        # a recording made only for a page gives up past this many objects (``gave_up``):
+        # the page would be too heavy for a browser, and its making for the run's memory
+        self.max_objects, self.gave_up = max_objects, False
         try:
             raw = open(self.path, "wb")
         except OSError as exc:
@@ -195,6 +198,13 @@ class Recorder:
     def take(self, t: float | None = None) -> None:
         """Record the scene as it is now, as frame ``frames`` at ``t`` (default: the
         frame's time on the video's clock, ``frames / fps`` s)."""
+        if self.gave_up:
+            return
+        if self.max_objects is not None and sum(
+                len(cv._objects) for cv in canvases()) > self.max_objects:
+            self.gave_up = True            # what is held goes; the file is the run's to remove
+            self._tables, self._layout, self._objs, self._ids = {}, {}, {}, {}
+            return
         line: dict[str, Any] = {"frame": self.frames,
                                 "t": self.frames / self.fps if t is None else t}
         cvs = self._canvases()

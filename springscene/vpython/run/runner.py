@@ -45,6 +45,7 @@ from .session import ProgramSession
 _PACKAGE = Path(__file__).resolve().parents[2]         # springscene itself
 _EXAMPLES = _PACKAGE / "examples"                       # programs it ships: a user's own
 _NONE = object()
+PAGE_MAX_OBJECTS = 5_000     # a page beside a video or still: more objects, the picture page
 
 
 def _ours(filename: str) -> bool:
@@ -217,11 +218,13 @@ def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
     beside ``out`` for the interactive page (``.html``, and the page beside a video or
     still), removed at the end."""
     suffix = out.suffix.lower()
+    limit = None
     if suffix == ".jsonl":
         target = tmp
     elif options.record is not None:
         target = files.enter_context(atomic_path(Path(options.record)))
     elif suffix == ".html" or options.page:
+        limit = None if suffix == ".html" else PAGE_MAX_OBJECTS
         stem = out.name
         while len(os.fsencode(stem)) > 200:      # room for the rest of the name
             stem = stem[:-1]
@@ -231,7 +234,7 @@ def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
         files.callback(target.unlink, missing_ok=True)
     else:
         return None
-    recorder = Recorder(target, options.fps, path.name, dialect.name, _version())
+    recorder = Recorder(target, options.fps, path.name, dialect.name, _version(), limit)
     files.callback(recorder.discard)      # closed, if the run ended before close()
     return recorder
 
@@ -375,7 +378,10 @@ def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,
     if not page:
         return written
     html_out = out.with_suffix(".html")
-    if recorder is not None:
+    if recorder is not None and recorder.gave_up:
+        result.notes.append(f"{html_out.name} shows the picture, not the interactive page: "
+                            f"the scene has more than {PAGE_MAX_OBJECTS:,} objects")
+    elif recorder is not None:
         try:
             result.page = write_interactive_page(recorder.path, html_out, video=out,
                                                  widgets=widgets.widgets_in_order(),
