@@ -42,8 +42,11 @@ def _basis(axis: vector, up: vector) -> np.ndarray:
 class frame:
     """A group of objects placed in the frame's own coordinates (VPython 6)."""
 
+    made = 0          # frames made in this process: none, and no object needs looking at
+
     def __init__(self, pos=None, axis=None, up=None, frame=None, visible: bool = True,
                  **args: Any) -> None:
+        type(self).made += 1
         self._pos = vector(0, 0, 0) if pos is None else _vec(pos, "pos")
         self._axis = vector(1, 0, 0) if axis is None else _vec(axis, "axis")
         self._up = vector(0, 1, 0) if up is None else _vec(up, "up")

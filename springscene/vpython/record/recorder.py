@@ -84,6 +84,7 @@ class _KindTable:
         for f in schema.numeric:
             paths.extend([f"{f.store}._{c}" for c in "xyz"] if f.type == "v" else [f.store])
         self._row_of = operator.attrgetter(*paths) if len(paths) > 1 else None
+        self.field_starts = np.array([c.start for c in schema.columns] or [0], dtype=np.intp)
         self.visible_col = next((cols.start for f, cols in zip(schema.numeric, schema.columns)
                                  if f.name == "visible"), None)
 
@@ -265,7 +266,8 @@ class Recorder:
             layout = self._layout.get(cid)
             if layout is None or not np.array_equal(layout[0], ids):
                 layout = self._layout[cid] = (ids, self._regroup(cv, cid, layout, deleted))
-            framed = any(getattr(o, "_frame", None) is not None for o in cv._objects)
+            framed = frames.frame.made > 0 and any(
+                getattr(o, "_frame", None) is not None for o in cv._objects)
             with frames.in_world(cv._objects) if framed else contextlib.nullcontext():
                 for kind, group in layout[1].items():
                     self._kind_frame(kind, group, cid, new, sets, framed)
@@ -345,16 +347,17 @@ class Recorder:
                 rec[f.name] = json_value(get(objs[i]))
             new.append(rec)
         old = ~fresh
-        if old.any():
-            o_rows, o_cur = rows[old], cur[old]
+        some_fresh = bool(fresh.any())
+        if not some_fresh or old.any():
+            o_rows, o_cur, o_rids = ((rows[old], cur[old], rids[old]) if some_fresh
+                                     else (rows, cur, rids))
             prev = table.rows[o_rows]
             differ = (o_cur != prev) & ~(np.isnan(o_cur) & np.isnan(prev))
             if differ.any():
-                o_rids = rids[old]
-                for f, cols in zip(schema.numeric, schema.columns):
-                    mask = differ[:, cols].any(axis=1)
-                    if not mask.any():
-                        continue
+                # each field's rows that changed, all fields in one reduction
+                by_field = np.logical_or.reduceat(differ, table.field_starts, axis=1)
+                for n in np.flatnonzero(by_field.any(axis=0)):
+                    f, cols, mask = schema.numeric[n], schema.columns[n], by_field[:, n]
                     vals = o_cur[mask][:, cols].ravel()
                     if f.type == "b":
                         entry = sets.setdefault(f.name, {"ids": [], "values": []})
