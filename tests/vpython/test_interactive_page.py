@@ -475,16 +475,42 @@ def test_a_configs_scene_is_recorded_as_vpythons_box_helix_and_sphere(tmp_path):
     assert cv["range"] == pytest.approx(0.1790085296108589)    # VPython's autoscale
 
 
-def test_render_to_html_writes_the_page_and_refuses_a_lattice(tmp_path, cli, glow):
+def test_render_to_html_writes_the_page(tmp_path, cli, glow):
     proc = cli("render", ROOT / "configs" / "wiki.toml", "--out", tmp_path / "wiki.html",
                "--duration", "1")
     assert proc.returncode == 0 and "wrote" in proc.stdout, proc.stderr
     page = (tmp_path / "wiki.html").read_text()
     assert "<title>Ball and Spring Model of Matter</title>" in page and "glow.min.js" in page
     assert [p.name for p in tmp_path.iterdir()] == ["wiki.html"]        # nothing left
-    proc = cli("render", ROOT / "configs" / "crystal.toml", "--out", tmp_path / "c.html")
-    assert proc.returncode == 2 and proc.stderr.count("\n") == 1 and "lattice" in proc.stderr
-    assert not (tmp_path / "c.html").exists()
+    proc = cli("render", ROOT / "configs" / "wiki.toml", "--out", tmp_path / "w.html",
+               "--duration", "0")
+    assert proc.returncode == 2 and proc.stderr.count("\n") == 1, proc.stderr
+    assert not (tmp_path / "w.html").exists()
+
+
+def test_a_lattice_configs_scene_is_its_atoms_and_bonds_at_its_speed(tmp_path):
+    """A chain of aluminium atoms: spheres on the physics' positions at every frame, the
+    held ends gray, coloured by displacement as the video colours them, bonds along the
+    atoms; the page plays the video's picoseconds a second."""
+    from springscene import build, config
+    from springscene.model.timeline import frame_steps, play
+    from springscene.vpython.page.scene_recording import record_scene
+
+    cfg = config.load(ROOT / "configs" / "chain-aluminum.toml")
+    record_scene(cfg, tmp_path / "chain.jsonl", duration=2e-12)
+    run = reader.read(tmp_path / "chain.jsonl")
+    r = cfg.render
+    steps = frame_steps(2e-12, r.fps, cfg.physics.dt, r.speed)
+    system = build.system(cfg)
+    expected = np.array([s.pos.copy() for s in play(system, steps)])
+    atoms, bonds = run["atoms"], run["bonds"]
+    assert len(atoms) == len(system.pos) and len(bonds) == len(system.i)
+    assert np.array_equal(np.stack([a.pos for a in atoms], axis=1), expected)
+    assert np.allclose(bonds[0].axis, expected[:, 1] - expected[:, 0])
+    assert run.header["time_scale"] == r.speed and run.times[-1] < 1e-11
+    assert atoms[0].first["color"] == [0.5, 0.5, 0.5]                    # held: gray
+    colours = np.stack([a.color for a in atoms[1:-1]])       # (atoms, frames, 3)
+    assert np.ptp(colours, axis=1).max() > 0.1            # coloured by their displacement
 
 
 @pytest.mark.slow

@@ -309,9 +309,19 @@
     showPrinted(k);
     state.frame = k;
     ui.slider.value = k;
-    ui.time.textContent = "t = " + times[k].toFixed(2) + " s / " + times[nframes - 1].toFixed(2) + " s";
+    ui.time.textContent = "t = " + timeText(times[k]) + " / " + timeText(times[nframes - 1]);
     api.last_show_ms = performance.now() - t0;
     return api.last_show_ms;
+  }
+
+  // program seconds a second of playing (1; a config's atoms: its video's speed, 1e-12)
+  var timeScale = (data.header && data.header.time_scale) || 1;
+  var PREFIXES = [[1, ""], [1e-3, "m"], [1e-6, "\u00b5"], [1e-9, "n"], [1e-12, "p"], [1e-15, "f"]];
+  function timeText(t) {        // seconds, with the prefix the run's length needs
+    var end = Math.abs(times[nframes - 1]) || 1, p = PREFIXES[0];
+    for (var i = 0; i < PREFIXES.length && end < 10 * PREFIXES[i][0]; i++) p = PREFIXES[i];
+    if (end >= 10) p = PREFIXES[0];
+    return (t / p[0]).toFixed(2) + " " + p[1] + "s";
   }
 
   function frameAt(t) { return Math.max(search(function (i) { return times[i]; }, nframes, t + 1e-9), 0); }
@@ -329,7 +339,7 @@
     if (!state.playing) return;
     checkUser();
     var now = performance.now(), tEnd = times[nframes - 1];
-    var t = state.prog0 + (now - state.wall0) / 1000 * state.speed;
+    var t = state.prog0 + (now - state.wall0) / 1000 * state.speed * timeScale;
     var k = frameAt(Math.min(t, tEnd));
     if (k !== state.frame) { show(k); state.shown++; }
     if (t >= tEnd) {

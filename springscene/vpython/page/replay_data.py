@@ -361,7 +361,7 @@ def replay_data(path: str | Path) -> dict[str, Any]:
             left_out[o.kind] = left_out.get(o.kind, 0) + 1
     return {
         "header": {k: replay.header.get(k) for k in ("program", "dialect", "fps",
-                                                     "springscene", "version")},
+                                                     "springscene", "version", "time_scale")},
         "times": replay.times, "end": _end(replay.end),
         "canvases": [{"id": cid, "t": tl} for cid, tl in sorted(replay.canvases.items())],
         "objects": objects, "graphs": replay.graphs, "series": series,

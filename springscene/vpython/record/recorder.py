@@ -156,7 +156,8 @@ class Recorder:
     """
 
     def __init__(self, path: Path, fps: int, program: str = "", dialect: str = "",
-                 version: str = "", max_objects: int | None = None) -> None:
+                 version: str = "", max_objects: int | None = None,
+                 time_scale: float | None = None) -> None:
         self.path, self.fps = Path(path), fps
         # a recording made only for a page gives up past this many objects (``gave_up``):
         # the page would be too heavy for a browser, and its making for the run's memory
@@ -184,8 +185,11 @@ class Recorder:
         self._printed: list[str] = []
         self._printed_size = 0
         self.record_ids: dict[int, int] = {}      # id(obj) -> record id, for the end's names
-        self._write({"format": FORMAT, "version": VERSION, "springscene": version,
-                     "program": program, "dialect": dialect, "fps": fps})
+        header = {"format": FORMAT, "version": VERSION, "springscene": version,
+                  "program": program, "dialect": dialect, "fps": fps}
+        if time_scale is not None and time_scale != 1:
+            header["time_scale"] = time_scale     # program seconds a second of playing
+        self._write(header)
 
     # -- what the program does between frames ----------------------------------------------
 
