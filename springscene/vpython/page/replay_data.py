@@ -22,23 +22,21 @@ program's own numbers as Python wrote them.
 from __future__ import annotations
 
 import base64
-import gzip
 import html
-import json
 import math
 import re
 import zlib
 from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
-from typing import Any, Iterator
+from typing import Any
 
 import numpy as np
 
-from ..record.reader import numbers
+from ..record.reader import lines, numbers
 from .safe_html import sanitize
 
-__all__ = ["replay_data", "frames_of", "DRAWN_KINDS"]
+__all__ = ["replay_data", "DRAWN_KINDS"]
 
 # kinds the player draws with GlowScript's own constructor
 DRAWN_KINDS = frozenset("box sphere simple_sphere ellipsoid cylinder cone pyramid arrow helix "
@@ -48,19 +46,6 @@ _SERIES_WIDTH = 2                     # x, y
 _PRINTED_LIMIT = 1 << 20              # characters of printed text kept in the page
 _TEXTURES = "vpython/data/vpython_textures"
 _TAG = re.compile(r"<[^>]*>")
-
-
-def frames_of(path: str | Path) -> Iterator[dict]:
-    """Each JSON line of a recording (``.gz`` read through gzip): header, frames, end."""
-    path = Path(path)
-    opener = gzip.open if path.suffix == ".gz" else open
-    with opener(path, "rt", encoding="utf-8") as f:
-        for line in f:
-            if line.strip():
-                try:
-                    yield json.loads(line)
-                except json.JSONDecodeError:     # a run killed mid-line: the frames before
-                    return
 
 
 @dataclass
@@ -342,7 +327,7 @@ def _texture_urls(objects: dict[int, _Object]) -> dict[str, str]:
 def replay_data(path: str | Path) -> dict[str, Any]:
     """The page's data for the recording at ``path`` (module docstring), as JSON values."""
     replay = _Replay()
-    for rec in frames_of(path):
+    for rec in lines(Path(path)):
         if "format" in rec:
             replay.header = rec
         elif "end" in rec:

@@ -25,10 +25,13 @@ import numpy as np
 from ...errors import UserError
 from .recorder import FORMAT, VERSION
 
-__all__ = ["read", "numbers", "Recording", "Track", "Series", "Snapshot"]
+__all__ = ["read", "lines", "numbers", "Recording", "Track", "Series", "Snapshot"]
 
 
-def _lines(path: Path) -> Iterator[dict]:
+def lines(path: Path) -> Iterator[dict]:
+    """Each JSON line of a recording (header, frames, end; ``.gz`` through gzip): a line
+    that is not JSON is a :class:`UserError` naming it, except the last one cut short (a
+    run killed mid-line), where the lines before it are the recording."""
     opener = gzip.open if path.name.endswith(".gz") else open
     try:
         with opener(path, "rt", encoding="utf-8") as fh:
@@ -173,8 +176,8 @@ class Recording:
 
     def __init__(self, path: Path) -> None:
         self.path = Path(path)
-        lines = _lines(self.path)
-        header = next(lines, None)
+        lines_ = lines(self.path)
+        header = next(lines_, None)
         if not isinstance(header, dict) or header.get("format") != FORMAT:
             raise UserError(f"{self.path}: not a springscene recording")
         if header.get("version", 0) > VERSION:
@@ -196,7 +199,7 @@ class Recording:
         self.graphs: list[dict] = []
         self.end: dict | None = None
         self._columns: dict[str, np.ndarray] = {}
-        for line in lines:
+        for line in lines_:
             if "end" in line:
                 self.end = line["end"]
                 if self.end.get("printed"):           # printed after the last frame
