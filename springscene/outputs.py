@@ -86,6 +86,15 @@ def gif_delays(n: int, fps: int) -> list[int]:
     return (10 * delays).tolist()
 
 
+def hidden_name(path: Path) -> str:
+    """The start of a hidden file's or folder's name beside ``path``: ``.NAME``, cut to
+    leave room in a legal name for what follows (a run's folder, a recording on its way)."""
+    name = Path(path).name
+    while len(os.fsencode(name)) > 200:
+        name = name[:-1]
+    return "." + name
+
+
 @contextlib.contextmanager
 def atomic_path(path: Path) -> Iterator[Path]:
     """Yield a temporary path beside ``path`` (same suffix); on success flush it to the disk

@@ -29,7 +29,7 @@ from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
 from ..view.info import info
 from ..view.overlay import OVERLAYS, parse_overlays
-from ..outputs import check_output
+from ..outputs import check_output, hidden_name
 from ..vpython.record import trace
 from ..vpython.record.reader import read as read_recording
 from ..vpython.run.options import FORMATS, MAX_LOD_PX
@@ -360,10 +360,8 @@ def _trace_recording(args: argparse.Namespace, traces: list):
     if not traces or args.record is not None or args.out.lower().endswith(".jsonl"):
         yield args.record
         return
-    out, name = Path(args.out), Path(args.out).name
-    while len(os.fsencode(name)) > 200:         # (a legal name, as the run's folder's)
-        name = name[:-1]
-    folder = tempfile.mkdtemp(prefix=f".{name}.{os.getpid()}.", suffix=".run",
+    out = Path(args.out)
+    folder = tempfile.mkdtemp(prefix=f"{hidden_name(out)}.{os.getpid()}.", suffix=".run",
                               dir=out.parent if str(out.parent) else ".")
     try:
         yield str(Path(folder) / "trace.jsonl")

@@ -22,6 +22,7 @@ import numpy as np
 from ... import build, config
 from ... import render as pipeline
 from ...errors import UserError
+from ...outputs import hidden_name
 from ...model.timeline import frame_steps, play
 from ...settings import Config
 from ...view import camera, lattice_scene
@@ -230,10 +231,8 @@ def write_scene_page(cfg: Config, out: Path, *, duration: float | None = None,
     """The interactive page of ``cfg``'s scene at ``out``; the number of frames. The
     recording is made in a hidden file beside ``out`` and removed."""
     out = Path(out)
-    stem = out.name
-    while len(os.fsencode(stem)) > 200:          # room for the rest of the name
-        stem = stem[:-1]
-    fd, name = tempfile.mkstemp(prefix=f".{stem}.", suffix=".jsonl", dir=out.parent or ".")
+    fd, name = tempfile.mkstemp(prefix=f"{hidden_name(out)}.", suffix=".jsonl",
+                                dir=out.parent or ".")
     os.close(fd)
     recording = Path(name)
     try:

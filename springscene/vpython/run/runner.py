@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Callable
 
 from ...errors import OutputError, ProgramError, UserError
-from ...outputs import atomic_path, write_png
+from ...outputs import atomic_path, hidden_name, write_png
 from .. import api as vp
 from ..api import attachments
 from ..core import runtime, widgets
@@ -225,10 +225,8 @@ def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
         target = files.enter_context(atomic_path(Path(options.record)))
     elif suffix == ".html" or options.page:
         limit = None if suffix == ".html" else PAGE_MAX_OBJECTS
-        stem = out.name
-        while len(os.fsencode(stem)) > 200:      # room for the rest of the name
-            stem = stem[:-1]
-        fd, name = tempfile.mkstemp(prefix=f".{stem}.", suffix=".jsonl", dir=out.parent)
+        fd, name = tempfile.mkstemp(prefix=f"{hidden_name(out)}.", suffix=".jsonl",
+                                    dir=out.parent)
         os.close(fd)
         target = Path(name)
         files.callback(target.unlink, missing_ok=True)

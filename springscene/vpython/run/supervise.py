@@ -46,6 +46,7 @@ from pathlib import Path
 from typing import Callable
 
 from ...errors import OutputError, ProgramError, UserError
+from ...outputs import hidden_name
 from .options import RunOptions, check_request
 from .runner import ProgramResult
 from .report import Watch, ended_line, memory_limit, parse_size, peak_of, rss_of
@@ -87,7 +88,7 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
     _remove_abandoned(out)
     try:
         # absolute: the program may change its working folder before it writes there
-        folder = Path(tempfile.mkdtemp(prefix=f"{_hidden(out)}.{os.getpid()}.", suffix=".run",
+        folder = Path(tempfile.mkdtemp(prefix=f"{hidden_name(out)}.{os.getpid()}.", suffix=".run",
                                        dir=os.path.abspath(out.parent or ".")))
     except OSError as exc:
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
@@ -106,18 +107,10 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
         shutil.rmtree(folder, ignore_errors=True)
 
 
-def _hidden(out: Path) -> str:
-    """The start of the private folder's name: ``.NAME`` (cut to stay a legal name)."""
-    name = out.name
-    while len(os.fsencode(name)) > 200:
-        name = name[:-1]
-    return "." + name
-
-
 def _remove_abandoned(out: Path) -> None:
     """The private folders of earlier runs to ``out`` whose springscene was killed outright
     (SIGKILL leaves no chance to clean up): their process is gone, so they go too."""
-    for folder in (out.parent or Path(".")).glob(f"{glob.escape(_hidden(out))}.*.run"):
+    for folder in (out.parent or Path(".")).glob(f"{glob.escape(hidden_name(out))}.*.run"):
         pid = folder.name[:-len(".run")].rsplit(".", 2)[-2]
         if not pid.isdigit() or int(pid) == os.getpid():
             continue
@@ -354,7 +347,7 @@ def _beside(source: Path, target: Path) -> Path:
     folder = target.parent if str(target.parent) else Path(".")
     if os.stat(source).st_dev == os.stat(folder).st_dev:
         return source
-    fd, name = tempfile.mkstemp(prefix=f"{_hidden(target)}.", suffix=target.suffix,
+    fd, name = tempfile.mkstemp(prefix=f"{hidden_name(target)}.", suffix=target.suffix,
                                 dir=folder)
     staged = Path(name)
     try:
