@@ -98,8 +98,7 @@ def vpython_cell(line: str, cell: str):
                "draft": args.draft, "timeout": args.timeout, "max_memory": args.max_memory}
     if args.video or (args.out and not args.out.endswith((".html", ".jsonl"))):
         out = args.out or folder / f"cell{n}.mp4"
-        video = api.run_vpython(program, out, page=False, **options)
-        return video.as_video()
+        return api.run_vpython(program, out, page=False, **options)   # no page: shown as video
     return api.run_vpython(program, args.out, **options)
 
 

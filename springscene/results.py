@@ -120,7 +120,6 @@ class Video:
         self.result = result
         self.path = Path(result.path)
         self.run = run            # a VPython run kept with record=: its Run; else None
-        self.show_page = True     # a VPython video run: a notebook shows its interactive page
 
     def __getattr__(self, name: str) -> Any:
         if name in ("result", "run"):
@@ -137,12 +136,6 @@ class Video:
             return f"data:{mime};base64,{data}"
         return html.escape(os.path.relpath(self.path))
 
-    def as_video(self) -> "Video":
-        """The same result shown as its video in a notebook (not as its page)."""
-        shown = Video(self.result, self.run)
-        shown.show_page = False
-        return shown
-
     def _interactive_page(self) -> str | None:
         """The run's interactive page, if it has one: the output itself (``.html``) or the
         page beside its video or still (not the picture page made without GlowScript)."""
@@ -154,7 +147,7 @@ class Video:
         return text if "glow.min.js" in text else None
 
     def _repr_html_(self) -> str:
-        page = self._interactive_page() if self.show_page else None
+        page = self._interactive_page()       # a run made without its page: the video
         if page is not None:
             size = getattr(self.result, "size", None)
             return page_frame(page, (size[1] if size else 600) + 160)

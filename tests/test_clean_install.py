@@ -95,19 +95,26 @@ def test_init_still_render_webm_figures_compare(home):
     assert "BallSpring_scene.png" in (home / "figs" / gallery[0]).read_text()
 
 
-def test_the_example_notebook_runs(home):
-    """springscene init api.ipynb, then every cell run by a kernel in the user's folder:
-    no errors, a still shown as a PNG and the video as an HTML5 <video>."""
+def _run_example_notebook(home, name: str) -> list:
+    """``springscene init NAME`` in the user's folder, every cell run there by a kernel;
+    the cells' outputs, none of them an error."""
     import nbclient
     import nbformat
 
-    proc = springscene_cli(home, "init", "api.ipynb")
+    proc = springscene_cli(home, "init", name)
     assert proc.returncode == 0, proc.stderr
-    nb = nbformat.read(home / "api.ipynb", as_version=4)
+    nb = nbformat.read(home / name, as_version=4)
     nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
                             resources={"metadata": {"path": str(home)}}).execute()
     outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
     assert not [o for o in outputs if o.output_type == "error"]
+    return outputs
+
+
+def test_the_example_notebook_runs(home):
+    """springscene init api.ipynb, then every cell run by a kernel in the user's folder:
+    no errors, a still shown as a PNG and the video as an HTML5 <video>."""
+    outputs = _run_example_notebook(home, "api.ipynb")
     kinds = [key for o in outputs for key in o.get("data", {})]
     assert "image/png" in kinds
     videos = [o.data["text/html"] for o in outputs if "<video" in o.get("data", {})
@@ -182,16 +189,7 @@ def test_the_vpython_notebook_runs(home):
     """springscene init vpython.ipynb, then every cell run by a kernel: the %%vpython cells
     show the interactive page (GlowScript's library inline in an iframe) or, with --video,
     the video; the testing API measures the wiki spring's period."""
-    import nbclient
-    import nbformat
-
-    proc = springscene_cli(home, "init", "vpython.ipynb")
-    assert proc.returncode == 0, proc.stderr
-    nb = nbformat.read(home / "vpython.ipynb", as_version=4)
-    nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
-                            resources={"metadata": {"path": str(home)}}).execute()
-    outputs = [o for cell in nb.cells if cell.cell_type == "code" for o in cell.outputs]
-    assert not [o for o in outputs if o.output_type == "error"]
+    outputs = _run_example_notebook(home, "vpython.ipynb")
     shown = [o.data["text/html"] for o in outputs if "text/html" in o.get("data", {})]
     pages = [h for h in shown if h.startswith("<iframe srcdoc=") and "glow.min.js" in h]
     videos = [h for h in shown if "<video" in h and "data:video/mp4;base64," in h]

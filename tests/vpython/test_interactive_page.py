@@ -423,6 +423,27 @@ def test_a_recorded_program_seeks_to_the_readers_values(browser, tmp_path):
     assert browser.js("return document.querySelectorAll('.vp-graph canvas').length") == 2
 
 
+def _by_colour(im: np.ndarray) -> dict[str, np.ndarray]:
+    """The page's spring scene by colour: red ball, cyan spring, grey holder on white."""
+    r, g, b = (im[..., i].astype(int) for i in range(3))
+    return {"ball": (r > 120) & (g < 90) & (b < 90),
+            "spring": (g > 120) & (b > 120) & (r < 110),
+            "holder": (abs(r - g) < 12) & (abs(g - b) < 12) & (r < 200)}
+
+
+def _assert_the_spring_scene_matches(picture, still, what: str) -> None:
+    """The issue's picture targets (mean ΔE00 ≤ 2, ≤ 1 % of pixels over 5; IoU 0.98 for
+    the ball and holder, 0.95 for the thin spring, whose anti-aliased rim falls outside a
+    colour mask)."""
+    de = imagediff.ciede2000(picture, still)
+    ours, theirs = _by_colour(picture), _by_colour(still)
+    ious = {k: imagediff.iou(ours[k], theirs[k]) for k in ours}
+    print(f"{what}: IoU {ious}; mean ΔE00 {de.mean():.2f}; "
+          f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
+    assert de.mean() <= 2 and (de > 5).mean() <= 0.01
+    assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
+
+
 @pytest.mark.slow
 def test_mid_run_the_replayed_canvas_is_springscenes_still_at_that_time(browser, tmp_path):
     """The wiki's spring with graphs cut at 1 s: the page at its last frame against
@@ -434,20 +455,7 @@ def test_mid_run_the_replayed_canvas_is_springscenes_still_at_that_time(browser,
     browser.open(write_interactive_page(rec, tmp_path / "spring_graph.html"))
     browser.js("window.springscene.seek(window.springscene.frames - 1)")
     picture = browser.canvas_picture()
-    de = imagediff.ciede2000(picture, still)
-
-    def by_colour(im):
-        r, g, b = (im[..., i].astype(int) for i in range(3))
-        return {"ball": (r > 120) & (g < 90) & (b < 90),
-                "spring": (g > 120) & (b > 120) & (r < 110),
-                "holder": (abs(r - g) < 12) & (abs(g - b) < 12) & (r < 200)}
-
-    ours, theirs = by_colour(picture), by_colour(still)
-    ious = {k: imagediff.iou(ours[k], theirs[k]) for k in ours}
-    print(f"spring_graph at 1 s: IoU {ious}; mean ΔE00 {de.mean():.2f}; "
-          f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
-    assert de.mean() <= 2 and (de > 5).mean() <= 0.01
-    assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
+    _assert_the_spring_scene_matches(picture, still, "spring_graph at 1 s")
 
 
 # ---- the page's own scene, from its config ------------------------------------------------
@@ -524,20 +532,7 @@ def test_the_wiki_page_is_springscenes_still(browser, tmp_path, cli):
     browser.js("window.springscene.seek(25)")
     picture = browser.canvas_picture()[40:]
     still = np.asarray(Image.open(tmp_path / "still.png").convert("RGB"))[40:]
-    de = imagediff.ciede2000(picture, still)
-
-    def by_colour(im):
-        r, g, b = (im[..., i].astype(int) for i in range(3))
-        return {"ball": (r > 120) & (g < 90) & (b < 90),
-                "spring": (g > 120) & (b > 120) & (r < 110),
-                "holder": (abs(r - g) < 12) & (abs(g - b) < 12) & (r < 200)}
-
-    ours, theirs = by_colour(picture), by_colour(still)
-    ious = {k: imagediff.iou(ours[k], theirs[k]) for k in ours}
-    print(f"wiki page at 0.5 s: IoU {ious}; mean ΔE00 {de.mean():.2f}; "
-          f"ΔE00 > 5 on {100 * (de > 5).mean():.2f} % of pixels")
-    assert de.mean() <= 2 and (de > 5).mean() <= 0.01
-    assert ious["ball"] >= 0.98 and ious["holder"] >= 0.98 and ious["spring"] >= 0.95
+    _assert_the_spring_scene_matches(picture, still, "wiki page at 0.5 s")
 
 
 @pytest.mark.slow

@@ -19,15 +19,15 @@ from __future__ import annotations
 
 import html
 import os
-import re
 import tempfile
 from pathlib import Path
 from typing import Any, Iterable
 from urllib.parse import quote
 
+from .graph_layout import plain_text
+
 __all__ = ["write_page", "widget_html"]
 
-_TAG = re.compile(r"<[^>]*>")
 _MEDIA_KINDS = ("video", "image", "gif")
 
 _STYLE = """\
@@ -171,7 +171,7 @@ def write_page(path: str | Path, *, title_html: str, caption_html: str, media: s
         raise ValueError(f"media_kind must be one of {', '.join(_MEDIA_KINDS)}, "
                          f"not {media_kind!r}")
     base = path.parent
-    name = html.unescape(_TAG.sub("", str(title_html))).strip() or Path(media).name
+    name = plain_text(title_html) or Path(media).name
     canvas = _canvas_html(media, media_kind, int(width), int(height), base)
     title_ws, caption_ws = _split_widgets(widgets, page_video)
     if page_video:           # the title, caption and graphs are in the video already

@@ -37,6 +37,7 @@ from urllib.parse import quote
 from ... import outputs
 from ...errors import OutputError
 from .glow_library import VERSION, GlowLibrary, library
+from .graph_layout import plain_text
 from .html_page import widget_html
 from .replay_data import replay_data
 from .safe_html import sanitize
@@ -169,7 +170,7 @@ def _page_title(data: dict) -> str:
     """The first canvas's title as text, else the program's name."""
     for c in data.get("canvases", ()):
         for _, value in c["t"].get("title", ()):
-            text = " ".join(html.unescape(re.sub(r"<[^>]*>", " ", value or "")).split())
+            text = " ".join(plain_text(value or "").split())
             if text:
                 return text
     program = (data.get("header") or {}).get("program")

@@ -22,9 +22,7 @@ program's own numbers as Python wrote them.
 from __future__ import annotations
 
 import base64
-import html
 import math
-import re
 import zlib
 from dataclasses import dataclass, field
 from importlib import resources
@@ -34,6 +32,8 @@ from typing import Any
 import numpy as np
 
 from ..record.reader import lines, numbers
+from ..record.recorder import PRINTED_LIMIT as _PRINTED_LIMIT
+from .graph_layout import plain_text
 from .safe_html import sanitize
 
 __all__ = ["replay_data", "DRAWN_KINDS"]
@@ -43,9 +43,7 @@ DRAWN_KINDS = frozenset("box sphere simple_sphere ellipsoid cylinder cone pyrami
                         "ring curve points label".split())
 _POINT_WIDTH = 7                      # x, y, z, r, g, b, radius
 _SERIES_WIDTH = 2                     # x, y
-_PRINTED_LIMIT = 1 << 20              # characters of printed text kept in the page
 _TEXTURES = "vpython/data/vpython_textures"
-_TAG = re.compile(r"<[^>]*>")
 
 
 @dataclass
@@ -299,8 +297,9 @@ def _graph_value(key: str, value: Any) -> Any:
 
 
 def _plain(markup: str) -> str:
-    """The text of ``markup``: tags dropped, entities read (shown as text, never HTML)."""
-    return html.unescape(_TAG.sub("", sanitize(markup)))
+    """The text of ``markup``: what could run dropped with its contents, then the tags,
+    entities read (shown as text, never HTML)."""
+    return plain_text(sanitize(markup))
 
 
 def _pairs(flat) -> list[list[float]]:

@@ -305,9 +305,7 @@ class Recording:
         width = len(sample) if isinstance(sample, list) else 1
         cur = np.full((n, width), np.nan)
         out = np.full((F, n, width), np.nan)
-        born: dict[int, list[Track]] = {}
-        for tr in self.objects:
-            born.setdefault(tr.born, []).append(tr)
+        born = self._born()
         gone: dict[int, list[Track]] = {}
         for tr in self.objects:
             if tr.deleted is not None:
@@ -332,6 +330,13 @@ class Recording:
         self._columns[attribute] = col
         return col
 
+    def _born(self) -> dict[int, list[Track]]:
+        """The objects by the frame they were made in."""
+        born: dict[int, list[Track]] = {}
+        for tr in self.objects:
+            born.setdefault(tr.born, []).append(tr)
+        return born
+
     def _sample(self, attribute: str) -> Any:
         """A value the attribute had somewhere in the run (None: never any)."""
         for tr in self.objects:
@@ -354,10 +359,10 @@ class Recording:
         cur: list = [None] * n
         changes: dict[int, dict] = {f: s.get(attribute) for f, s in self._sets
                                     if attribute in s}
+        born = self._born()
         for f in range(F):
-            for tr in self.objects:
-                if tr.born == f:
-                    cur[self._slot[tr.id]] = tr.first.get(attribute)
+            for tr in born.get(f, ()):
+                cur[self._slot[tr.id]] = tr.first.get(attribute)
             change = changes.get(f)
             if change is not None:
                 for i, v in zip(change["ids"], change["values"]):

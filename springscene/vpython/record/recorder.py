@@ -36,7 +36,7 @@ __all__ = ["Recorder", "FORMAT", "VERSION", "json_value"]
 
 FORMAT = "springscene-recording"
 VERSION = 1
-_PRINTED_LIMIT = 1 << 20        # characters of printed text kept between two frames
+PRINTED_LIMIT = 1 << 20         # characters of printed text kept between two frames (and shown)
 _UNSEEN = object()              # a value not read yet (the object is new to its group)
 
 
@@ -184,7 +184,6 @@ class Recorder:
         self._graph_next = 0                                 # graphs and series share ids
         self._printed: list[str] = []
         self._printed_size = 0
-        self.record_ids: dict[int, int] = {}      # id(obj) -> record id, for the end's names
         header = {"format": FORMAT, "version": VERSION, "springscene": version,
                   "program": program, "dialect": dialect, "fps": fps}
         if time_scale is not None and time_scale != 1:
@@ -194,8 +193,8 @@ class Recorder:
     # -- what the program does between frames ----------------------------------------------
 
     def printed(self, text: str) -> None:
-        if self._printed_size < _PRINTED_LIMIT:
-            self._printed.append(text[:_PRINTED_LIMIT - self._printed_size])
+        if self._printed_size < PRINTED_LIMIT:
+            self._printed.append(text[:PRINTED_LIMIT - self._printed_size])
             self._printed_size += len(self._printed[-1])
 
     # -- a frame -------------------------------------------------------------------------
@@ -315,7 +314,6 @@ class Recorder:
                 if key not in self._ids:
                     self._objs[key] = o
                     self._ids[key] = (self._next, kind, table.new_row())
-                    self.record_ids[key] = self._next
                     self._next += 1
                     fresh[i] = True
                 rids[i], _, rows[i] = self._ids[key]
@@ -468,6 +466,10 @@ class Recorder:
         except OSError as exc:
             raise OutputError(reason_of(exc), self.path, exc.errno or errno.EIO) from None
 
+    def _record_id(self, obj) -> int | None:
+        """``obj``'s record id, if it is a recorded object still on its canvas."""
+        return self._ids[id(obj)][0] if self._objs.get(id(obj)) is obj else None
+
     def names(self, namespace: dict) -> tuple[dict, dict]:
         """The program's global names that hold recorded objects (or lists of them), and
         its global numbers, booleans and vectors (the end's ``names`` and ``globals``)."""
@@ -476,12 +478,11 @@ class Recorder:
         for name, v in namespace.items():
             if name.startswith("__"):
                 continue
-            rid = self.record_ids.get(id(v))
-            if rid is not None and self._objs.get(id(v)) is v:
+            rid = self._record_id(v)
+            if rid is not None:
                 names[name] = rid
             elif isinstance(v, (list, tuple)) and v and len(v) <= 100_000:
-                ids = [self.record_ids.get(id(x)) if self._objs.get(id(x)) is x else None
-                       for x in v]
+                ids = [self._record_id(x) for x in v]
                 if all(i is not None for i in ids):
                     names[name] = ids
             elif isinstance(v, (bool, int, float, vector, np.floating, np.integer)):

@@ -145,7 +145,7 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     given = {**(visual6.namespace(vp) if dialect.kind == "vpython6" else {}), **names}
     with contextlib.ExitStack() as files:
         tmp = files.enter_context(atomic_path(out))
-        recorder = _recorder(files, path, out, tmp, options, dialect, still)
+        recorder = _recorder(files, path, out, tmp, options, dialect)
         film = Film(None if still or data_only else tmp, options.fps, options.overlays,
                     options.backend, options.antialias, on_frame, options.canvas_only,
                     quality=options.quality, lod=options.level_of_detail())
@@ -212,7 +212,7 @@ def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeli
 
 
 def _recorder(files: contextlib.ExitStack, path: Path, out: Path, tmp: Path,
-              options: RunOptions, dialect, still: bool) -> Recorder | None:
+              options: RunOptions, dialect) -> Recorder | None:
     """The run's recorder, when the run keeps one: the output itself (``.jsonl``),
     ``--record``'s file (moved into place whole when the run ends well), or a hidden file
     beside ``out`` for the interactive page (``.html``, and the page beside a video or
