@@ -104,7 +104,9 @@ def test_defaults_read_as_vpythons(vp):
 
 def test_an_object_stores_only_what_is_set(vp):
     s, t = (vp.sphere(pos=vp.vector(1, 2, 3), radius=0.3, color=vp.color.red) for _ in "st")
-    assert set(vars(s)) == {"_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty"}
+    # the radius changed the size: a change other than the position, counted (_looks)
+    assert set(vars(s)) == {"_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty",
+                            "_looks"}
     assert s._axis is t._axis and s._up is t._up and type(s._axis) is Default
     assert s._pos is not t._pos and type(s._pos) is vector and s._pos._on_change is None
     b = vp.box()

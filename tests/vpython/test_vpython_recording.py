@@ -355,3 +355,80 @@ def test_a_page_for_a_huge_scene_is_the_picture_page_with_a_note(tmp_path):
     page = (tmp_path / "big.html").read_text()
     assert "glow.min.js" not in page and 'src="big.png"' in page
     assert sorted(p.name for p in tmp_path.iterdir()) == ["big.html", "big.png", "prog.py"]
+
+
+# Every way a program changes a solid, helix, arrow, ring or compound through VPython's
+# attributes: the recorder reads a moving object's position alone and the rest only when
+# the object counted a change (``_looks``), so each of these must be counted.
+_CHANGES = {
+    "pos": lambda o, vp: setattr(o, "pos", vp.vector(1, 2, 3)),
+    "pos.x": lambda o, vp: setattr(o.pos, "x", 7),
+    "axis": lambda o, vp: setattr(o, "axis", vp.vector(0, 2, 1)),
+    "axis.y": lambda o, vp: setattr(o.axis, "y", 3),
+    "up": lambda o, vp: setattr(o, "up", vp.vector(1, 0, 1)),
+    "up.z": lambda o, vp: setattr(o.up, "z", 0.5),
+    "size": lambda o, vp: setattr(o, "size", vp.vector(2, 3, 4)),
+    "size.z": lambda o, vp: setattr(o.size, "z", 5),
+    "length": lambda o, vp: setattr(o, "length", 3),
+    "height": lambda o, vp: setattr(o, "height", 3),
+    "width": lambda o, vp: setattr(o, "width", 3),
+    "color": lambda o, vp: setattr(o, "color", vp.color.red),
+    "color.y": lambda o, vp: setattr(o.color, "y", 0.25),
+    "red": lambda o, vp: setattr(o, "red", 0.5),
+    "opacity": lambda o, vp: setattr(o, "opacity", 0.5),
+    "shininess": lambda o, vp: setattr(o, "shininess", 0.1),
+    "emissive": lambda o, vp: setattr(o, "emissive", True),
+    "visible": lambda o, vp: setattr(o, "visible", False),
+    "rotate": lambda o, vp: o.rotate(angle=0.5, axis=vp.vector(0, 0, 1)),
+}
+_OWN_CHANGES = {
+    "sphere": {"radius": lambda o, vp: setattr(o, "radius", 2)},
+    "cylinder": {"radius": lambda o, vp: setattr(o, "radius", 2)},
+    "arrow": {n: (lambda n: lambda o, vp: setattr(o, n, 0.3))(n)
+              for n in ("shaftwidth", "headwidth", "headlength")}
+    | {"round": lambda o, vp: setattr(o, "round", True)},
+    "helix": {"coils": lambda o, vp: setattr(o, "coils", 9),
+              "thickness": lambda o, vp: setattr(o, "thickness", 0.3),
+              "ccw": lambda o, vp: setattr(o, "ccw", False),
+              "radius": lambda o, vp: setattr(o, "radius", 2)},
+    "ring": {"thickness": lambda o, vp: setattr(o, "thickness", 0.3),
+             "radius": lambda o, vp: setattr(o, "radius", 2)},
+}
+
+
+def _recorded_rows(recorder, objs):
+    """The rows the recorder holds for ``objs`` (what it wrote last), by kind."""
+    out = []
+    for o in objs:
+        _, kind, row = recorder._ids[id(o)]
+        out.append(recorder._tables[kind].rows[row].copy())
+    return out
+
+
+@pytest.mark.parametrize("kind", ["sphere", "box", "cylinder", "arrow", "helix", "ring",
+                                  "compound"])
+def test_every_change_to_a_solid_is_recorded_though_positions_are_read_apart(tmp_path, kind):
+    import springscene.vpython.api as vp
+    from springscene.vpython.record.recorder import Recorder
+    changes = {**_CHANGES, **_OWN_CHANGES.get(kind, {})}
+    for name, change in changes.items():
+        vp.reset()
+
+        def make():
+            if kind == "compound":
+                return vp.compound([vp.box(), vp.sphere(pos=vp.vector(1, 0, 0))])
+            return getattr(vp, kind)(pos=vp.vector(0.5, 0, 0))
+        still, moving, changed = make(), make(), make()
+        recorder = Recorder(tmp_path / "r.jsonl", 25)
+        try:
+            recorder.take()
+            moving.pos.y += 1            # read apart: only its position
+            change(changed, vp)
+            recorder.take()
+            rows = _recorded_rows(recorder, [still, moving, changed])
+            table = recorder._tables[recorder._ids[id(changed)][1]]
+            truth = table.gather([still, moving, changed])
+        finally:
+            recorder.close({})
+        np.testing.assert_array_equal(np.array(rows), truth, err_msg=f"{kind}.{name}")
+        assert not np.array_equal(rows[2], rows[0]), (kind, name)

@@ -67,8 +67,15 @@ class _Base:
             parent._children.append(self)
         self._dirty = True
 
+    _looks = 0    # changes to anything but the position, counted by :meth:`_touch`
+
     def _touch(self) -> None:
+        """Mark the object changed: the renderer draws it anew, and ``_looks`` counts one
+        more change to something other than its position. A position change marks only
+        ``_dirty``, so that a recorder (:mod:`..record.recorder`) reads a moving object's
+        position alone, and all of its attributes only when ``_looks`` moved."""
         self._dirty = True
+        self._looks += 1
 
     canvas = Linked(readonly="canvas cannot be modified")
     visible = Linked(bool, dirty=True)

@@ -102,7 +102,7 @@ class fused(standard):
 
     def _retint(self) -> None:
         self._tinted = True
-        self._dirty = True
+        self._touch()
 
     color = Linked(_vec, then="_retint", live=True)
 

@@ -78,10 +78,10 @@ class arrow(standard):
     _shaftwidth = _headwidth = _headlength = 0.0
     _round = False
 
-    shaftwidth = Linked(float, dirty=True)
-    headwidth = Linked(float, dirty=True)
-    headlength = Linked(float, dirty=True)
-    round = Linked(bool, dirty=True)
+    shaftwidth = Linked(float, then="_touch")
+    headwidth = Linked(float, then="_touch")
+    headlength = Linked(float, then="_touch")
+    round = Linked(bool, then="_touch")
 
     def _clone_args(self) -> dict:
         return {**super()._clone_args(), "shaftwidth": self._shaftwidth,
@@ -98,9 +98,9 @@ class helix(_Round):
     _thickness = None
     _ccw = True
 
-    coils = Linked(float, dirty=True)
-    ccw = Linked(bool, dirty=True)
-    thickness = Linked(float, dirty=True, get=lambda self: (
+    coils = Linked(float, then="_touch")
+    ccw = Linked(bool, then="_touch")
+    thickness = Linked(float, then="_touch", get=lambda self: (
         self._thickness if self._thickness is not None else self.radius / 10))
 
     def _clone_args(self) -> dict:
@@ -126,7 +126,7 @@ class ring(standard):
         r = self.radius
         t = float(value)
         self._size = vector(2 * t, 2 * (r + t), 2 * (r + t))
-        self._dirty = True
+        self._touch()
 
     @property
     def radius(self) -> float:
@@ -137,4 +137,4 @@ class ring(standard):
         t = self.thickness
         r = float(value)
         self._size = vector(2 * t, 2 * (r + t), 2 * (r + t))
-        self._dirty = True
+        self._touch()

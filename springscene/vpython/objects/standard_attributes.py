@@ -10,7 +10,9 @@ The solids built on it (``sphere``, ``box``, ``helix``, ...) are in :mod:`.solid
 ``compound`` in :mod:`.compounds`, ``label`` in :mod:`.labels` and the lights with
 the canvas (:mod:`..core.canvases`). Nothing here draws: an object only marks itself
 changed (``_dirty``); the renderer (:mod:`springscene.vpython.draw.renderer`) reads all
-objects of a kind once per frame.
+objects of a kind once per frame. A change to anything but ``pos`` goes through
+:meth:`_touch`, which also counts it (``_looks``): a recorder reads a moving object's
+position every frame and the rest only when that count moved.
 """
 
 from __future__ import annotations
@@ -110,7 +112,7 @@ class standard(_Base):
     _HOOKS = {"_pos": "_on_pos_change", "_axis": "_on_axis_change",
               "_size": "_on_size_change", "_up": "_touch", "_color": "_touch"}
     # what every object stores, first in its class's key table (:func:`.shared_defaults.seed_keys`)
-    _KEYS = ("_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty")
+    _KEYS = ("_pos", "_axis", "_up", "_size", "_color", "_canvas", "_dirty", "_looks")
 
     def __init_subclass__(cls, **kwargs) -> None:
         super().__init_subclass__(**kwargs)
@@ -267,14 +269,14 @@ class standard(_Base):
                 self._own("_size")._x_set(m)
         if self._adjustupaxis:
             self._adjust_up(old, value)
-        self._dirty = True
+        self._touch()
 
     axis = Linked(live=True, set=_set_axis)
 
     def _on_axis_change(self) -> None:
         if self._axis_sets_size:
             self._own("_size")._x_set(self._axis.mag)
-        self._dirty = True
+        self._touch()
 
     def _adjust_up(self, old: vector, new: vector) -> None:
         """VPython's ``adjust_up``: turn ``up`` with the axis unless they are already square."""
@@ -294,7 +296,7 @@ class standard(_Base):
         self._up = value
         if self._adjustupaxis:
             self._adjust_axis(old, value)
-        self._dirty = True
+        self._touch()
 
     up = Linked(live=True, set=_set_up)
 
@@ -310,14 +312,14 @@ class standard(_Base):
         self._size = _vec(value, "size")
         if self._axis_sets_size:
             self._fit_axis()
-        self._dirty = True
+        self._touch()
 
     size = Linked(live=True, set=_set_size)
 
     def _on_size_change(self) -> None:
         if self._axis_sets_size:
             self._fit_axis()
-        self._dirty = True
+        self._touch()
 
     def _fit_axis(self) -> None:
         """``mag(axis) = size.x`` keeping the axis's direction (VPython's size setter)."""
@@ -334,7 +336,7 @@ class standard(_Base):
     def length(self, value) -> None:
         self._own("_size")._x_set(float(value))
         self._fit_axis()
-        self._dirty = True
+        self._touch()
 
     @property
     def height(self) -> float:
@@ -343,7 +345,7 @@ class standard(_Base):
     @height.setter
     def height(self, value) -> None:
         self._own("_size")._y_set(float(value))
-        self._dirty = True
+        self._touch()
 
     @property
     def width(self) -> float:
@@ -352,11 +354,12 @@ class standard(_Base):
     @width.setter
     def width(self, value) -> None:
         self._own("_size")._z_set(float(value))
-        self._dirty = True
+        self._touch()
 
     # -- appearance ----------------------------------------------------------------------
 
-    color = Linked(_vec, dirty=True, live=True)
+    color = Linked(_vec, then="_touch", live=True)
+    visible = Linked(bool, then="_touch")
 
     red, green, blue = component("color", 0), component("color", 1), component("color", 2)
 
@@ -376,11 +379,11 @@ class standard(_Base):
             self.texture = value.texture_value
         if getattr(value, "emissive", False):
             self._emissive = True
-        self._dirty = True
+        self._touch()
 
-    opacity = Linked(float, dirty=True)
-    shininess = Linked(float, dirty=True)
-    emissive = Linked(bool, dirty=True)
+    opacity = Linked(float, then="_touch")
+    shininess = Linked(float, then="_touch")
+    emissive = Linked(bool, then="_touch")
 
     # -- motion --------------------------------------------------------------------------
 

@@ -30,6 +30,8 @@ from ..api.graphs import GraphSeries, graph, graphs
 from ..core.canvases import canvases
 from ..core.vectors import vector
 from ..objects import frames
+from ..objects.standard_attributes import standard
+from ..objects.text3d import text
 from .fields import POINT_KINDS, Schema, schema_of
 
 __all__ = ["Recorder", "FORMAT", "VERSION", "json_value"]
@@ -87,6 +89,10 @@ class _KindTable:
         self.field_starts = np.array([c.start for c in schema.columns] or [0], dtype=np.intp)
         self.visible_col = next((cols.start for f, cols in zip(schema.numeric, schema.columns)
                                  if f.name == "visible"), None)
+        # a moving object's position alone, with its count of other changes (``_looks``)
+        self.pos_cols = next((cols for f, cols in zip(schema.numeric, schema.columns)
+                              if f.name == "pos" and f.store == "_pos"), None)
+        self._pos_looks = operator.attrgetter("_pos._x", "_pos._y", "_pos._z", "_looks")
 
     def new_row(self) -> int:
         if self.free:
@@ -111,16 +117,43 @@ class _KindTable:
                 out[i, cols] = _one(getattr(o, f.store, None), f.type)
         return out
 
+    def read(self, group: "_Group") -> np.ndarray:
+        """The group's numeric fields now, as :meth:`gather` reads them, but read in full
+        only for objects made since the last frame or whose ``_looks`` moved: of the
+        others only the position is read, the rest is as last recorded (what
+        :meth:`..objects.base._Base._touch` promises: any other change counts)."""
+        objs = group.objs
+        if not group.apart:
+            return self.gather(objs)
+        M = len(objs)
+        now = np.fromiter(itertools.chain.from_iterable(map(self._pos_looks, objs)), float,
+                          count=4 * M).reshape(M, 4)
+        looks, before = now[:, 3], group.looks
+        group.looks = looks
+        if before is None:
+            return self.gather(objs)
+        cur = self.rows[group.rows]
+        cur[:, self.pos_cols] = now[:, :3]
+        stale = np.flatnonzero((looks != before) | group.fresh)
+        if len(stale):
+            cur[stale] = self.gather([objs[i] for i in stale])
+        return cur
+
 
 class _Group:
     """The objects of one kind on one canvas, as the last frame had them: their rows in
     the kind's table, record ids, and their non-numeric values."""
 
     def __init__(self, objs: list, rows: np.ndarray, rids: np.ndarray, fresh: np.ndarray,
-                 schema: Schema) -> None:
+                 table: _KindTable) -> None:
         self.objs, self.rows, self.rids, self.fresh = objs, rows, rids, fresh
-        self.getters = [operator.attrgetter(f.store) for f in schema.other]
-        self.others: list[list | None] = [None] * len(schema.other)
+        self.getters = [operator.attrgetter(f.store) for f in table.schema.other]
+        self.others: list[list | None] = [None] * len(table.schema.other)
+        # read position apart (:meth:`_KindTable.read`): objects that count their other
+        # changes (``_looks``, every solid but 3D text, whose facing turns with the camera)
+        self.apart = table.pos_cols is not None and all(
+            issubclass(t, standard) and not issubclass(t, text) for t in set(map(type, objs)))
+        self.looks: np.ndarray | None = None       # each object's ``_looks`` as last read
 
 
 def _one(v: Any, kind: str):
@@ -135,6 +168,31 @@ def _one(v: Any, kind: str):
         return float(v)
     except (TypeError, ValueError):
         return math.nan
+
+
+def _records(kind: str, cid: int, schema: Schema, rids: list, block: np.ndarray, objs: list,
+             getters: list) -> list[dict]:
+    """The "new" entries of objects just made: their ids and all their fields, from their
+    rows of numbers (``block``) and their other values. A number not finite is null, and
+    so is a vector with no finite component (a label's unset colour)."""
+    fields = [(f.name, c.start, c.stop, f.type) for f, c in zip(schema.numeric, schema.columns)]
+    finite = np.isfinite(block).all(axis=1)
+    out = []
+    for rid, row, ok, o in zip(rids, block.tolist(), finite.tolist(), objs):
+        rec = {"id": rid, "kind": kind, "canvas": cid}
+        if ok:
+            for name, a, b, t in fields:
+                rec[name] = row[a:b] if t == "v" else bool(row[a]) if t == "b" else row[a]
+        else:
+            row = [x if math.isfinite(x) else None for x in row]
+            for name, a, b, t in fields:
+                v = row[a:b]
+                rec[name] = ((v if any(x is not None for x in v) else None) if t == "v"
+                             else v[0] if t == "f" or v[0] is None else bool(v[0]))
+        for f, get in zip(schema.other, getters):
+            rec[f.name] = json_value(get(o))
+        out.append(rec)
+    return out
 
 
 def _point(p: dict) -> list:
@@ -317,7 +375,7 @@ class Recorder:
                     self._next += 1
                     fresh[i] = True
                 rids[i], _, rows[i] = self._ids[key]
-            group = groups[kind] = _Group(objs, rows, rids, fresh, table.schema)
+            group = groups[kind] = _Group(objs, rows, rids, fresh, table)
             old = (layout[1].get(kind) if layout is not None else None)
             if old is not None:      # the values of the objects that were there before
                 at = {r: j for j, r in enumerate(old.rids.tolist())}
@@ -325,6 +383,9 @@ class Recorder:
                     if before is not None:
                         group.others[n] = [before[at[r]] if r in at else _UNSEEN
                                            for r in rids.tolist()]
+                if old.looks is not None and group.apart:     # new objects: read in full
+                    group.looks = np.array([old.looks[at[r]] if r in at else math.nan
+                                            for r in rids.tolist()])
         return groups
 
     def _kind_frame(self, kind: str, group: _Group, cid: int, new: list, sets: dict,
@@ -332,34 +393,33 @@ class Recorder:
         table = self._tables[kind]
         schema = table.schema
         objs, rows, rids, fresh = group.objs, group.rows, group.rids, group.fresh
-        cur = table.gather(objs)
+        if framed:       # in world coordinates, only for this frame: all read anew
+            cur, group.looks = table.gather(objs), None
+        else:
+            cur = table.read(group)
         if framed and table.visible_col is not None:   # VPython 6: a hidden frame hides
             hidden = np.fromiter(map(frames.hidden, objs), bool, count=len(objs))
             cur[hidden, table.visible_col] = 0.0
-        for i in np.flatnonzero(fresh):
-            rec = {"id": int(rids[i]), "kind": kind, "canvas": cid}
-            for f, cols in zip(schema.numeric, schema.columns):
-                v = cur[i, cols]
-                if f.type == "v":       # an unset vector (a label's colour) is null
-                    rec[f.name] = _floats(v) if np.isfinite(v).any() else None
-                else:
-                    rec[f.name] = (bool(v[0]) if f.type == "b" and math.isfinite(v[0])
-                                   else _floats(v)[0])
-            for f, get in zip(schema.other, group.getters):
-                rec[f.name] = json_value(get(objs[i]))
-            new.append(rec)
+        born = np.flatnonzero(fresh)
+        if len(born):
+            new.extend(_records(kind, cid, schema, rids[born].tolist(), cur[born],
+                                [objs[i] for i in born.tolist()], group.getters))
         old = ~fresh
         some_fresh = bool(fresh.any())
         if not some_fresh or old.any():
             o_rows, o_cur, o_rids = ((rows[old], cur[old], rids[old]) if some_fresh
                                      else (rows, cur, rids))
             prev = table.rows[o_rows]
-            differ = (o_cur != prev) & ~(np.isnan(o_cur) & np.isnan(prev))
-            if differ.any():
-                # each field's rows that changed, all fields in one reduction
-                by_field = np.logical_or.reduceat(differ, table.field_starts, axis=1)
-                for n in np.flatnonzero(by_field.any(axis=0)):
-                    f, cols, mask = schema.numeric[n], schema.columns[n], by_field[:, n]
+            differ = o_cur != prev
+            unset = np.isnan(o_cur)             # an unset value (a label's colour) stays
+            if unset.any():
+                differ &= ~(unset & np.isnan(prev))
+            changed = differ.any(axis=0)
+            if changed.any():
+                # the fields that changed, then each one's rows
+                for n in np.flatnonzero(np.logical_or.reduceat(changed, table.field_starts)):
+                    f, cols = schema.numeric[n], schema.columns[n]
+                    mask = differ[:, cols].any(axis=1)
                     vals = o_cur[mask][:, cols].ravel()
                     if f.type == "b":
                         entry = sets.setdefault(f.name, {"ids": [], "values": []})
