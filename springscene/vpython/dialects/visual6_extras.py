@@ -10,15 +10,27 @@
   counts the data into the bins.
 - ``controls(...)``: VPython 6's separate window of widgets. With no user its
   widgets never fire; it only holds them.
+- positional arguments where VPython 6's constructors had them (:func:`positional`):
+  3D ``text(pos, axis, up, height, color, ...)``, ``gdisplay(x, y, width, height,
+  title, ...)``, ``gcurve(dot, dot_color, size, shape)``, ``gdots(size, shape)``,
+  ``gvbars(delta)``, ``ghbars(delta)``, ``controls(x, y, width, height, range, ...)``.
+  VPython 6's objects (``sphere``, ``curve``, ``label``, ``points`` ...) took keywords
+  only (``py_renderable.__init__(self, **keywords)``), and so do these.
+- ``color`` (``crayola``): VPython 6's colour functions take a tuple, a list or a
+  vector and return a tuple (``visual_common/crayola.py``): ``gray(x)``,
+  ``rgb_to_hsv``, ``hsv_to_rgb``, ``rgb_to_grayscale``.
 """
 
 from __future__ import annotations
 
+import colorsys
 from typing import Any
 
 import numpy as np
 
 from ..core import runtime, widgets
+from ..core.canvases import color as _colors
+from ..core.vectors import vector
 from ..api.graphs import gvbars
 from ..api.texturing import textures
 
@@ -103,7 +115,8 @@ class ghistogram:
 class controls:
     """VPython 6's controls window: holds its widgets, which no user ever works."""
 
-    def __init__(self, **args: Any) -> None:
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        args = _named("controls", CONTROLS_ARGS, args, kwargs)
         self.__dict__.update(args)
         self.display = None
 
@@ -155,3 +168,99 @@ def menu(**args: Any) -> widgets.menu:
     m = widgets.menu(**args)
     m.items = []
     return m
+
+
+
+def _rgb(T) -> tuple[float, float, float]:
+    """VPython 6's colour argument: any sequence (tuple, list, vector, array), its first
+    three numbers."""
+    if isinstance(T, vector):
+        return T.x, T.y, T.z
+    r, g, b = (float(c) for c in list(T)[:3])
+    return r, g, b
+
+
+class Crayola:
+    """``color`` (``crayola``) in VPython 6: the named colours, and functions that take a
+    tuple (or a vector) and return a tuple, as ``visual_common/crayola.py``'s did."""
+
+    def __getattr__(self, name: str):           # red, green, ... purple (as VPython 7's)
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return getattr(_colors, name)
+
+    @staticmethod
+    def gray(luminance: float) -> tuple[float, float, float]:
+        return (luminance, luminance, luminance)
+
+    grey = gray
+
+    @staticmethod
+    def rgb_to_hsv(T) -> tuple[float, float, float]:
+        return colorsys.rgb_to_hsv(*_rgb(T))
+
+    @staticmethod
+    def hsv_to_rgb(T) -> tuple[float, float, float]:
+        return colorsys.hsv_to_rgb(*_rgb(T))
+
+    @staticmethod
+    def rgb_to_grayscale(T) -> tuple[float, float, float]:
+        r, g, b = _rgb(T)
+        luminance = 0.21 * r + 0.71 * g + 0.07 * b
+        return (luminance, luminance, luminance)
+
+
+crayola = Crayola()
+
+
+# VPython 6's positional arguments, in order (visual_common/graph.py, controls.py,
+# primitives.py; VPython 5's vis/ the same, but for gdisplay's first, ``window``)
+GDISPLAY_ARGS = ("x", "y", "width", "height", "title", "xtitle", "ytitle", "xmax", "xmin",
+                 "ymax", "ymin", "logx", "logy", "foreground", "background")
+TEXT_ARGS = ("pos", "axis", "up", "height", "color", "x", "y", "z", "red", "green", "blue",
+             "text", "font", "align", "visible", "twosided", "depth", "material", "spacing",
+             "vertical_spacing")
+CONTROLS_ARGS = ("x", "y", "width", "height", "range", "title", "foreground", "background")
+SERIES_ARGS = {"gcurve": ("dot", "dot_color", "size", "shape"), "gdots": ("size", "shape"),
+               "gvbars": ("delta",), "ghbars": ("delta",)}
+
+
+def _named(what: str, names: tuple[str, ...], args: tuple, kwargs: dict) -> dict:
+    """Positional arguments given their VPython 6 names, joined to the keywords."""
+    if len(args) > len(names):
+        raise TypeError(f"{what}() takes at most {len(names)} positional arguments "
+                        f"({len(args)} given)")
+    for name, value in zip(names, args):
+        if name in kwargs:
+            raise TypeError(f"{what}() got multiple values for argument {name!r}")
+        kwargs[name] = value
+    return kwargs
+
+
+def positional(cls: type, names: tuple[str, ...], drop: tuple[str, ...] = ()) -> type:
+    """``cls`` that also takes VPython 6's positional arguments ``names`` (in order), and
+    accepts (and ignores) the keywords ``drop`` VPython 6 had and VPython 7 has not."""
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs = _named(cls.__name__, names, args, kwargs)
+        for name in drop:
+            kwargs.pop(name, None)
+        cls.__init__(self, **kwargs)
+    return type(cls.__name__, (cls,), {"__init__": __init__, "__doc__": cls.__doc__,
+                                       "__module__": __name__})
+
+
+def gdisplay(graph: type) -> type:
+    """VPython 6's ``gdisplay(x, y, width, height, title, ...)`` as a VPython 7 ``graph``;
+    a first argument that is not a number is VPython 6.x's ``window``, which is dropped."""
+    made = positional(graph, GDISPLAY_ARGS)
+
+    class gdisplay(made):
+        __doc__ = graph.__doc__
+
+        def __init__(self, *args: Any, **kwargs: Any) -> None:
+            if args and not isinstance(args[0], (int, float)):
+                args = args[1:]
+            kwargs.pop("window", None)
+            made.__init__(self, *args, **kwargs)
+    gdisplay.__name__ = gdisplay.__qualname__ = graph.__name__
+    return gdisplay
