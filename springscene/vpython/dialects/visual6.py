@@ -215,8 +215,7 @@ def _exit(*args) -> None:
 def _positional_classes(vp: types.ModuleType) -> dict[str, type]:
     """VPython 7's classes that VPython 6 made with positional arguments, taking them
     (:func:`.visual6_extras.positional`), made once so that every module gives the same."""
-    made = {"text": _extras.positional(vp.text, _extras.TEXT_ARGS),
-            "gdisplay": _extras.gdisplay(vp.graph)}
+    made = {"text": _extras.positional(vp.text, _extras.TEXT_ARGS)}
     for name, args in _extras.SERIES_ARGS.items():
         made[name] = _extras.positional(getattr(vp, name), args, drop=("shape",))
     return made
@@ -259,8 +258,8 @@ def _graph_names(vp: types.ModuleType) -> dict[str, Any]:
     names = namespace(vp)
     names.update({n: getattr(vp, n) for n in ("vector", "label", "curve", "points",
                                               "distant_light")})
-    names.update(display=vp.canvas, crayola=crayola, color=crayola, ghistogram=ghistogram,
-                 time=time, log10=math.log10, modf=math.modf)
+    names.update(display=vp.canvas, crayola=crayola, color=crayola, gdisplay=vp.graph,
+                 ghistogram=ghistogram, time=time, log10=math.log10, modf=math.modf)
     names.update({n: c for n, c in _positional_classes(vp).items() if n != "text"})
     names.update({n: getattr(np, n) for n in ("array", "arange", "ndarray", "zeros", "sort",
                                               "searchsorted", "concatenate")})

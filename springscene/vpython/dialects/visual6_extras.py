@@ -11,8 +11,8 @@
 - ``controls(...)``: VPython 6's separate window of widgets. With no user its
   widgets never fire; it only holds them.
 - positional arguments where VPython 6's constructors had them (:func:`positional`):
-  3D ``text(pos, axis, up, height, color, ...)``, ``gdisplay(x, y, width, height,
-  title, ...)``, ``gcurve(dot, dot_color, size, shape)``, ``gdots(size, shape)``,
+  3D ``text(pos, axis, up, height, color, ...)``, ``gcurve(dot, dot_color, size,
+  shape)``, ``gdots(size, shape)``,
   ``gvbars(delta)``, ``ghbars(delta)``, ``controls(x, y, width, height, range, ...)``.
   VPython 6's objects (``sphere``, ``curve``, ``label``, ``points`` ...) took keywords
   only (``py_renderable.__init__(self, **keywords)``), and so do these.
@@ -214,9 +214,7 @@ crayola = Crayola()
 
 
 # VPython 6's positional arguments, in order (visual_common/graph.py, controls.py,
-# primitives.py; VPython 5's vis/ the same, but for gdisplay's first, ``window``)
-GDISPLAY_ARGS = ("x", "y", "width", "height", "title", "xtitle", "ytitle", "xmax", "xmin",
-                 "ymax", "ymin", "logx", "logy", "foreground", "background")
+# primitives.py; VPython 5's vis/ the same)
 TEXT_ARGS = ("pos", "axis", "up", "height", "color", "x", "y", "z", "red", "green", "blue",
              "text", "font", "align", "visible", "twosided", "depth", "material", "spacing",
              "vertical_spacing")
@@ -248,19 +246,3 @@ def positional(cls: type, names: tuple[str, ...], drop: tuple[str, ...] = ()) ->
     return type(cls.__name__, (cls,), {"__init__": __init__, "__doc__": cls.__doc__,
                                        "__module__": __name__})
 
-
-def gdisplay(graph: type) -> type:
-    """VPython 6's ``gdisplay(x, y, width, height, title, ...)`` as a VPython 7 ``graph``;
-    a first argument that is not a number is VPython 6.x's ``window``, which is dropped."""
-    made = positional(graph, GDISPLAY_ARGS)
-
-    class gdisplay(made):
-        __doc__ = graph.__doc__
-
-        def __init__(self, *args: Any, **kwargs: Any) -> None:
-            if args and not isinstance(args[0], (int, float)):
-                args = args[1:]
-            kwargs.pop("window", None)
-            made.__init__(self, *args, **kwargs)
-    gdisplay.__name__ = gdisplay.__qualname__ = graph.__name__
-    return gdisplay
