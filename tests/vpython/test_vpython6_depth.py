@@ -145,8 +145,15 @@ def test_live_arrays_views_copies_and_numpy_writers(lenient):
     assert c._pts[-1]["color"].value == [1, 0, 0]
     c.color = (0, 1, 0)                                        # one colour for every point
     assert all("color" not in p for p in c._pts) and c.color[2].tolist() == [0, 1, 0]
+    edits = c._edits
+    c.pos = c.pos.tolist()                                     # the same points: no edit
+    assert c._edits == edits
+    c.y = [1, 2, 3, 4, 5, 6, 7]                                # grown: counted as an edit
+    assert c._edits > edits and c.npoints == 7 and c._pts[-1]["pos"].value == [4, 7, 0]
     c.pos = ()
     assert c.npoints == 0 and c.pos.shape == (0, 3)
+    c.append(pos=(np.float64(1), 0, np.int64(2)))              # numpy numbers: one point
+    assert c.npoints == 1 and c._pts[0]["pos"].value == [1, 0, 2]
     with pytest.raises(ValueError, match="Nx3"):
         c.pos = np.zeros((2, 4))
 
@@ -245,3 +252,14 @@ def test_graph_import_alone_runs_a_vpython6_scene(tmp_path):
     rec = read(tmp_path / "run.jsonl")
     assert printed(rec)["ok"] == "0.5 True 5.0"
     assert np.allclose(rec["ball"].pos[-1], [0.5, 1, 0])
+
+
+def test_materials_vpython6_made_from_images_are_plain_looks(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        look = materials.texture(data=materials.loadTGA("flower128"), mapping="rectangular")
+        box(material=look)
+        print("look", look.name)
+    """)
+    run_program(prog, tmp_path / "run.jsonl")
+    assert printed(read(tmp_path / "run.jsonl"))["look"] == "diffuse"

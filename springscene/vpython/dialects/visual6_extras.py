@@ -56,6 +56,14 @@ class Material:
         return f"materials.{self.name}"
 
 
+class _MaterialMaker(Material):
+    """A name of ``materials`` springscene does not know: a plain look, and a function
+    (``materials.texture(data=materials.loadTGA("wood"))``) that makes one."""
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Material:
+        return Material("diffuse")
+
+
 class _Materials:
     """``materials``: VPython 6's looks, by name."""
 
@@ -66,7 +74,7 @@ class _Materials:
     def __getattr__(self, name: str) -> Material:     # texture(), loadTGA, show_mat_pos ...
         if name.startswith("__"):
             raise AttributeError(name)
-        return Material("diffuse")
+        return _MaterialMaker("diffuse")
 
 
 materials = _Materials()

@@ -164,7 +164,7 @@ def _flatten(args: tuple) -> list:
         if isinstance(a, np.ndarray) and a.ndim == 2:       # VPython 6: an N x 3 array
             out.extend(a)
         elif isinstance(a, (list, tuple)) and a and not all(
-                isinstance(c, (int, float)) and not isinstance(c, bool) for c in a):
+                isinstance(c, (int, float, np.number)) and not isinstance(c, bool) for c in a):
             out.extend(a)
         else:
             out.append(a)
@@ -430,17 +430,24 @@ class _PointList(_Base):
         """VPython 6's ``set_length``: fewer points keep the last ones; more repeat the last
         point (its colour too), or start at the origin."""
         pts = self._pts
+        if n == len(pts):
+            return
         if n < len(pts):
             del pts[:len(pts) - n]
         while len(pts) < n:
             last = pts[-1] if pts else {"pos": vector(0, 0, 0)}
             pts.append({k: vector(v) if isinstance(v, vector) else v for k, v in last.items()})
+        self._changed()
 
     def _same(self, field: str, rows: np.ndarray) -> bool:
-        """The rows are the points already (``c.pos += v`` writes in place, then sets)."""
+        """The rows are the points already (``c.pos += v`` writes in place, then sets;
+        ``c.pos = c.ends`` each frame): no change to record."""
+        if len(rows) != len(self._pts):
+            return False
         entry = self._live.get(field)
-        return entry is not None and entry[2] == self._stamp() and \
-            entry[0].shape == rows.shape and np.array_equal(entry[0], rows)
+        if entry is not None and entry[2] == self._stamp():
+            return np.array_equal(entry[0], rows)
+        return np.array_equal(self._values(field), rows)
 
     def _set_rows(self, field: str, rows: np.ndarray) -> None:
         """``c.pos = array`` or ``c.color = array``: the points, resized to the rows."""
