@@ -263,3 +263,22 @@ def test_materials_vpython6_made_from_images_are_plain_looks(tmp_path):
     """)
     run_program(prog, tmp_path / "run.jsonl")
     assert printed(read(tmp_path / "run.jsonl"))["look"] == "diffuse"
+
+
+def test_shapes_and_paths_take_vpython6s_order_of_arguments(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        print("ngon", len(shapes.ngon((0, 0), 6, 2)), shapes.ngon((0, 0), 6, 2) ==
+              shapes.ngon(pos=(0, 0), np=6, length=2))
+        print("star", len(shapes.star((0, 0), 2, 7)))
+        print("cross", shapes.cross((0, 0), 2, 0.5) == shapes.cross(width=2, thickness=0.5))
+        print("list", len(shapes.pointlist([(0, 0), (1, 0), (1, 1)])))
+        print("path", paths.triangle((0, 0, 0), 3, 4) == paths.triangle(length=4))
+        print("circle", shapes.circle((1, 1), 2, 16) == shapes.circle(pos=(1, 1), radius=2, np=16))
+    """)
+    run_program(prog, tmp_path / "run.jsonl")
+    said = printed(read(tmp_path / "run.jsonl"))
+    assert said["ngon"] == "7 True"                 # np=6 second, as VPython 6 took it
+    assert said["star"] == "15"                     # radius, then n=7 points
+    assert said["cross"] == said["path"] == said["circle"] == "True"
+    assert said["list"] == "4"

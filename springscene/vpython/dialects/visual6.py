@@ -234,7 +234,9 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
                  cross=cross, proj=proj, comp=comp, diff_angle=diff_angle, rotate=rotate,
                  display=vp.canvas, crayola=crayola, color=crayola, materials=materials,
                  frame=frame, random=_Random(), exit=_exit, scene=vp.scene,
-                 text=_positional_classes(vp)["text"], version=("6.11", "release"))
+                 text=_positional_classes(vp)["text"], version=("6.11", "release"),
+                 shapes=_extras.Outlines(vp.shapes, _extras.SHAPES_ARGS, _extras.SHAPE_NAMES),
+                 paths=_extras.Outlines(vp.paths, _extras.PATHS_ARGS))
     names["sum"], names["any"], names["all"] = (_numpy_or_builtin(np.sum, sum),
                                                 _numpy_or_builtin(np.any, any),
                                                 _numpy_or_builtin(np.all, all))

@@ -14,6 +14,7 @@
   3D ``text(pos, axis, up, height, color, ...)``, ``gcurve(dot, dot_color, size,
   shape)``, ``gdots(size, shape)``,
   ``gvbars(delta)``, ``ghbars(delta)``, ``controls(x, y, width, height, range, ...)``.
+  ``shapes.*`` and ``paths.*`` take VPython 6's order of arguments (:class:`Outlines`).
   VPython 6's objects (``sphere``, ``curve``, ``label``, ``points`` ...) took keywords
   only (``py_renderable.__init__(self, **keywords)``), and so do these.
 - ``color`` (``crayola``): VPython 6's colour functions take a tuple, a list or a
@@ -24,6 +25,7 @@
 from __future__ import annotations
 
 import colorsys
+import inspect
 from typing import Any
 
 import numpy as np
@@ -254,3 +256,79 @@ def positional(cls: type, names: tuple[str, ...], drop: tuple[str, ...] = ()) ->
     return type(cls.__name__, (cls,), {"__init__": __init__, "__doc__": cls.__doc__,
                                        "__module__": __name__})
 
+
+
+_SCALES = ("scale", "xscale", "yscale")
+_LOOKS = ("roundness", "invert") + _SCALES
+# VPython 6's order of arguments (visual_common/shapes.py), where VPython 7's differs
+SHAPES_ARGS = {
+    "rectangle": ("pos", "width", "height", "rotate", "thickness") + _LOOKS,
+    "cross": ("pos", "width", "thickness", "rotate") + _LOOKS,
+    "trapezoid": ("pos", "width", "height", "top", "rotate", "thickness") + _LOOKS,
+    "circle": ("pos", "radius", "np") + _SCALES + ("thickness", "angle1", "angle2", "rotate"),
+    "line": ("pos", "np", "rotate") + _SCALES + ("thickness", "start", "end", "path"),
+    "arc": ("pos", "radius", "np", "rotate") + _SCALES + ("thickness", "angle1", "angle2",
+                                                          "path"),
+    "ellipse": ("pos", "width", "height", "np", "rotate", "thickness") + _SCALES +
+               ("angle1", "angle2"),
+    "ngon": ("pos", "np", "length", "radius", "rotate", "thickness") + _LOOKS,
+    "triangle": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "pentagon": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "hexagon": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "star": ("pos", "radius", "n", "iradius", "rotate", "thickness") + _LOOKS,
+    "pointlist": ("pos", "rotate", "roundness", "invert") + _SCALES + ("path",),
+    "gear": ("pos", "n", "radius", "phi", "addendum", "dedendum", "fradius", "rotate",
+             "scale", "internal", "res", "bevel"),
+    "rackGear": ("pos", "n", "radius", "phi", "addendum", "dedendum", "fradius", "rotate",
+                 "scale", "length", "res", "bevel", "depth"),
+}
+# ... visual_common/paths.py
+PATHS_ARGS = {
+    "rectangle": ("pos", "width", "height", "rotate", "thickness") + _LOOKS + ("up",),
+    "cross": ("pos", "width", "thickness", "rotate") + _LOOKS + ("up",),
+    "trapezoid": ("pos", "width", "height", "top", "rotate", "thickness") + _LOOKS + ("up",),
+    "circle": ("pos", "radius", "np", "thickness") + _SCALES + ("up",),
+    "line": ("start", "end", "np"),
+    "arc": ("pos", "radius", "np", "rotate", "angle1", "angle2", "thickness") + _SCALES +
+           ("up",),
+    "ellipse": ("pos", "width", "height", "np", "thickness") + _SCALES + ("up",),
+    "ngon": ("pos", "np", "length", "radius", "rotate", "thickness") + _LOOKS + ("up",),
+    "triangle": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "pentagon": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "hexagon": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "star": ("pos", "radius", "n", "iradius", "rotate", "thickness") + _LOOKS + ("up",),
+    "pointlist": ("pos", "rotate", "thickness") + _LOOKS + ("up",),
+}
+# VPython 6's names of VPython 7's shapes
+SHAPE_NAMES = {"pointlist": "points", "rackGear": "rackgear"}
+
+
+class Outlines:
+    """VPython 6's ``shapes`` or ``paths``: VPython 7's, called with VPython 6's order of
+    positional arguments (``shapes.ngon(pos, np, length)``, ``shapes.star(pos, radius,
+    n)``), and VPython 6's names for two (``pointlist``, ``rackGear``). An argument given
+    by position that VPython 7's function has no option for is dropped, as it made no
+    difference VPython 7 keeps."""
+
+    def __init__(self, outlines: Any, orders: dict[str, tuple[str, ...]],
+                 names: dict[str, str] | None = None) -> None:
+        self._outlines, self._orders, self._names = outlines, orders, names or {}
+
+    def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        made = getattr(self._outlines, self._names.get(name, name))
+        order = self._orders.get(name)
+        if order is None or not callable(made):
+            return made
+        taken = inspect.signature(made).parameters
+        if any(p.kind is p.VAR_KEYWORD for p in taken.values()):
+            taken = None
+
+        def outline(*args: Any, **kwargs: Any):
+            named = _named(name, order, args, {})
+            if taken is not None:
+                named = {k: v for k, v in named.items() if k in taken}
+            return made(**named, **kwargs)
+        outline.__name__ = name
+        return outline
