@@ -282,3 +282,28 @@ def test_shapes_and_paths_take_vpython6s_order_of_arguments(tmp_path):
     assert said["star"] == "15"                     # radius, then n=7 points
     assert said["cross"] == said["path"] == said["circle"] == "True"
     assert said["list"] == "4"
+
+
+def test_append_takes_vpython6s_colour_and_retain(tmp_path):
+    prog = write(tmp_path, """
+        from visual import *
+        trail = curve(color=color.white)
+        for i in range(30):
+            trail.append(pos=(i, 0, 0), retain=10)          # the newest ten kept
+        print("kept", trail.npoints, trail.x[0], trail.x[-1])
+        trail.append((40, 0, 0), (0, 1, 0), 4)               # pos, colour, retain
+        print("coloured", trail.npoints, trail.color[-1].tolist(), trail.color[0].tolist())
+        trail.append(pos=(41, 0, 0), red=1)                  # the last colour, red changed
+        print("red", trail.color[-1].tolist())
+        two = curve()
+        two.append((0, 0, 0), (5, 5, 5))                    # not a colour: two points
+        print("two", two.npoints)
+    """)
+    run_program(prog, tmp_path / "run.jsonl")
+    rec = read(tmp_path / "run.jsonl")
+    said = printed(rec)
+    assert said["kept"] == "10 20.0 29.0"
+    assert said["coloured"] == "4 [0.0, 1.0, 0.0] [1.0, 1.0, 1.0]"
+    assert said["red"] == "[1.0, 1.0, 0.0]"
+    assert said["two"] == "2"
+    assert np.allclose(rec["trail"].points()[:, 0], [27, 28, 29, 40, 41])

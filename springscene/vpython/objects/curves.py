@@ -27,7 +27,6 @@ from .base import _Base
 from ..core.checks import _vec, one_of
 from ..core.vectors import is_lenient, vector
 
-_FIELDS = ("pos", "color")
 _COLUMNS = {"x": ("pos", 0), "y": ("pos", 1), "z": ("pos", 2),
             "red": ("color", 0), "green": ("color", 1), "blue": ("color", 2)}
 
@@ -133,6 +132,18 @@ def _rows(value, name: str) -> np.ndarray:
     if a.shape[1] == 2:
         a = np.column_stack([a, np.zeros(len(a))])
     return a
+
+
+def _v6_colour_args(args: tuple) -> bool:
+    """``append(pos, color[, retain])`` as VPython 6 took it: a second argument that is a
+    colour (three numbers from 0 to 1), a third a number; else VPython 7's
+    ``append(v1, v2, ...)``, several points."""
+    if len(args) not in (2, 3) or (len(args) == 3 and not isinstance(args[2], (int, float))):
+        return False
+    c = args[1]
+    xyz = c._xyz() if isinstance(c, vector) else c
+    return isinstance(xyz, (list, tuple, np.ndarray)) and len(xyz) == 3 and all(
+        isinstance(v, (int, float, np.number)) and 0 <= v <= 1 for v in xyz)
 
 
 def _point(value, constructing: bool) -> dict:
@@ -289,9 +300,10 @@ class _PointList(_Base):
                     pt[key] = _vec(kwargs[key], key) if key == "color" else kwargs[key]
         return pts
 
-    def _trim(self) -> None:
-        if self._retain > 0 and len(self._pts) > self._retain:
-            k = len(self._pts) - self._retain
+    def _trim(self, retain: int | None = None) -> None:
+        retain = self._retain if retain is None else retain
+        if retain > 0 and len(self._pts) > retain:
+            k = len(self._pts) - retain
             del self._pts[:k]
             if self._cache is not None:
                 count, *arrays = self._cache
@@ -304,14 +316,43 @@ class _PointList(_Base):
         self._touch()
 
     def append(self, *args, **kwargs) -> None:
+        if not is_lenient():
+            new = self._parse(args, kwargs)
+            self._pts.extend(new)
+            self._appended += len(new)
+            self._trim()
+            return
+        if _v6_colour_args(args):
+            retain = self._v6_append_args(args, kwargs)
+            args = args[:1]
+        else:
+            retain = self._v6_append_args((), kwargs)
         new = self._parse(args, kwargs)
-        if is_lenient() and self._pts and "color" in self._pts[-1]:
-            last = self._pts[-1]["color"]        # VPython 6: the last point's colour goes on
+        if self._pts and "color" in self._pts[-1]:
+            last = self._pts[-1]["color"]        # the last point's colour goes on
             for pt in new:
                 pt.setdefault("color", last)
         self._pts.extend(new)
         self._appended += len(new)
-        self._trim()
+        self._trim(None if retain is None or retain < 0 else max(retain, 1))
+
+    def _v6_append_args(self, args: tuple, kwargs: dict) -> int | None:
+        """VPython 6's ``append(pos, color, retain)`` and ``append(pos, red=, green=,
+        blue=, retain=)`` (``arrayprim.cpp``): a second and third argument are the point's
+        colour and how many points to keep (0: the new one alone); returns that number."""
+        for name, value in zip(("color", "retain"), args[1:]):
+            if name in kwargs:
+                raise TypeError(f"append() got multiple values for argument {name!r}")
+            kwargs[name] = value
+        parts = {c: kwargs.pop(c) for c in ("red", "green", "blue") if c in kwargs}
+        if parts and "color" not in kwargs:
+            last = self._pts[-1].get("color", self._color) if self._pts else self._color
+            rgb = list(last._xyz())
+            for c, value in parts.items():
+                rgb[("red", "green", "blue").index(c)] = float(value)
+            kwargs["color"] = vector(*rgb)
+        retain = kwargs.pop("retain", None)
+        return None if retain is None else int(retain)
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
