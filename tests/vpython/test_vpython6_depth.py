@@ -132,7 +132,7 @@ def test_live_arrays_views_copies_and_numpy_writers(lenient):
     copy[0] = (9, 9, 9)                                        # a copy is the program's own
     assert c._pts[0]["pos"].value == [0, 0, 0]
     edits = c._edits
-    np.copyto(pos[:, 2], 5.0)                                  # numpy writing into a view
+    np.add(pos[:, 2], 5.0, out=pos[:, 2])                      # numpy writing into a view
     assert [p["pos"].z for p in c._pts] == [5, 5, 5] and c._edits == edits + 1
     pos[1] = pos[1]                                            # nothing changes: no edit
     assert c._edits == edits + 1

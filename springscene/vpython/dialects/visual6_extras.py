@@ -190,14 +190,9 @@ def _rgb(T) -> tuple[float, float, float]:
     return r, g, b
 
 
-class Crayola:
-    """``color`` (``crayola``) in VPython 6: the named colours, and functions that take a
-    tuple (or a vector) and return a tuple, as ``visual_common/crayola.py``'s did."""
-
-    def __getattr__(self, name: str):           # red, green, ... purple (as VPython 7's)
-        if name.startswith("__"):
-            raise AttributeError(name)
-        return getattr(_colors, name)
+class Crayola(type(_colors)):
+    """``color`` (``crayola``) in VPython 6: VPython 7's named colours, and functions that
+    take a tuple (or a vector) and return a tuple, as ``visual_common/crayola.py``'s did."""
 
     @staticmethod
     def gray(luminance: float) -> tuple[float, float, float]:
@@ -304,31 +299,33 @@ SHAPE_NAMES = {"pointlist": "points", "rackGear": "rackgear"}
 
 
 class Outlines:
-    """VPython 6's ``shapes`` or ``paths``: VPython 7's, called with VPython 6's order of
-    positional arguments (``shapes.ngon(pos, np, length)``, ``shapes.star(pos, radius,
-    n)``), and VPython 6's names for two (``pointlist``, ``rackGear``). An argument given
-    by position that VPython 7's function has no option for is dropped, as it made no
-    difference VPython 7 keeps."""
+    """VPython 6's ``shapes`` or ``paths``: each of VPython 7's functions, called with
+    VPython 6's order of positional arguments (``shapes.ngon(pos, np, length)``,
+    ``shapes.star(pos, radius, n)``), and VPython 6's names for two (``pointlist``,
+    ``rackGear``). An argument given by position that VPython 7's function has no option
+    for is dropped, as it made no difference VPython 7 keeps."""
 
     def __init__(self, outlines: Any, orders: dict[str, tuple[str, ...]],
                  names: dict[str, str] | None = None) -> None:
-        self._outlines, self._orders, self._names = outlines, orders, names or {}
+        names = {**{n: n for n in dir(outlines) if not n.startswith("_")}, **(names or {})}
+        for name, own in names.items():
+            made = getattr(outlines, own, None)
+            if made is not None:
+                setattr(self, name, _ordered(name, made, orders.get(name)))
 
-    def __getattr__(self, name: str):
-        if name.startswith("_"):
-            raise AttributeError(name)
-        made = getattr(self._outlines, self._names.get(name, name))
-        order = self._orders.get(name)
-        if order is None or not callable(made):
-            return made
-        taken = inspect.signature(made).parameters
-        if any(p.kind is p.VAR_KEYWORD for p in taken.values()):
-            taken = None
 
-        def outline(*args: Any, **kwargs: Any):
-            named = _named(name, order, args, {})
-            if taken is not None:
-                named = {k: v for k, v in named.items() if k in taken}
-            return made(**named, **kwargs)
-        outline.__name__ = name
-        return outline
+def _ordered(name: str, made: Any, order: tuple[str, ...] | None) -> Any:
+    """``made`` taking its positional arguments in ``order`` (VPython 6's)."""
+    if order is None or not callable(made):
+        return made
+    taken = inspect.signature(made).parameters
+    if any(p.kind is p.VAR_KEYWORD for p in taken.values()):
+        taken = None
+
+    def outline(*args: Any, **kwargs: Any):
+        named = _named(name, order, args, {})
+        if taken is not None:
+            named = {k: v for k, v in named.items() if k in taken}
+        return made(**named, **kwargs)
+    outline.__name__ = name
+    return outline

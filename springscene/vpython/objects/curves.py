@@ -9,13 +9,11 @@ vectors or dictionaries ``{"pos": v, "color": c, "radius": r}``; ``append``,
 both as :mod:`..geometry.point_meshes` draws them.
 
 In a VPython 6 program (:func:`..core.vectors.is_lenient`) the points are also numpy
-arrays, as VPython 6's ``arrayprim`` kept them (``src/python/arrayprim.cpp``):
-``c.pos`` and ``c.color`` are N x 3 arrays, ``c.x``/``c.y``/``c.z`` and
-``c.red``/``c.green``/``c.blue`` their columns. Reading one gives a live view
-(:class:`LivePoints`): a write through it (an item, a slice, in-place arithmetic)
-changes the points as ``modify`` does. Setting one replaces the points, resizing the
-list: fewer points keep the last ones, more copy the last point's colour (and the
-other coordinates a column leaves unset); a single colour colours every point.
+arrays, as VPython 6's ``arrayprim`` (``src/python/arrayprim.cpp``) kept them: ``c.pos``
+and ``c.color`` N x 3, ``c.x`` ... ``c.blue`` their columns. Reading one gives a live
+view (:class:`LivePoints`): a write through it changes the points as ``modify`` does.
+Setting one replaces the points, resizing the list (fewer keep the last ones, more repeat
+the last point); a single colour colours every point.
 """
 
 from __future__ import annotations
@@ -62,10 +60,6 @@ class LivePoints(np.ndarray):
         super().__setitem__(key, _plain(value))
         self._wrote()
 
-    def fill(self, value) -> None:
-        super().fill(value)
-        self._wrote()
-
     def __array_ufunc__(self, ufunc, method, *inputs, out=None, **kwargs):
         inputs = tuple(_plain(x) for x in inputs)
         if out is not None:
@@ -78,31 +72,8 @@ class LivePoints(np.ndarray):
                 o._wrote()
         return out[0] if len(out) == 1 else out
 
-    def __array_function__(self, func, types, args, kwargs):
-        result = super().__array_function__(func, types, args, kwargs)
-        if func in (np.copyto, np.place, np.putmask, np.put):
-            target = args[0] if args else next(iter(kwargs.values()), None)
-            if isinstance(target, LivePoints):
-                target._wrote()
-        return result
-
     def __repr__(self) -> str:
         return repr(self.view(np.ndarray))
-
-
-def _arith(name: str):
-    """numpy's operator, with a vector taken as its 3 numbers (a vector refuses numpy)."""
-    base = getattr(np.ndarray, name)
-
-    def op(self, other):
-        return base(self, _plain(other))
-    op.__name__ = name
-    return op
-
-
-for _name in ("__add__", "__radd__", "__sub__", "__rsub__", "__mul__", "__rmul__",
-              "__truediv__", "__iadd__", "__isub__", "__imul__", "__itruediv__"):
-    setattr(LivePoints, _name, _arith(_name))
 
 
 def _is_table(value) -> bool:
@@ -123,10 +94,8 @@ def _rows(value, name: str) -> np.ndarray:
     if _is_table(value) and not isinstance(value, np.ndarray):
         value = [_vec(v, name)._xyz() for v in value]
     a = np.array(value, dtype=float)
-    if a.ndim == 1 and a.size == 0:
-        return np.empty((0, 3))
-    if a.ndim == 1 and a.size in (2, 3):
-        a = a[None, :]
+    if a.ndim == 1 and a.size in (0, 2, 3):            # none, or one point
+        a = a.reshape(-1, a.size or 3)
     if a.ndim != 2 or a.shape[1] not in (2, 3):
         raise ValueError(f"{name} must be an Nx3 array")
     if a.shape[1] == 2:
@@ -140,10 +109,9 @@ def _v6_colour_args(args: tuple) -> bool:
     ``append(v1, v2, ...)``, several points."""
     if len(args) not in (2, 3) or (len(args) == 3 and not isinstance(args[2], (int, float))):
         return False
-    c = args[1]
-    xyz = c._xyz() if isinstance(c, vector) else c
-    return isinstance(xyz, (list, tuple, np.ndarray)) and len(xyz) == 3 and all(
-        isinstance(v, (int, float, np.number)) and 0 <= v <= 1 for v in xyz)
+    c = args[1]._xyz() if isinstance(args[1], vector) else args[1]
+    return isinstance(c, (list, tuple, np.ndarray)) and len(c) == 3 and all(
+        isinstance(v, (int, float, np.number)) and 0 <= v <= 1 for v in c)
 
 
 def _point(value, constructing: bool) -> dict:
@@ -316,43 +284,34 @@ class _PointList(_Base):
         self._touch()
 
     def append(self, *args, **kwargs) -> None:
-        if not is_lenient():
-            new = self._parse(args, kwargs)
-            self._pts.extend(new)
-            self._appended += len(new)
-            self._trim()
-            return
-        if _v6_colour_args(args):
-            retain = self._v6_append_args(args, kwargs)
-            args = args[:1]
-        else:
-            retain = self._v6_append_args((), kwargs)
+        retain = None
+        if is_lenient():
+            args, retain = self._v6_append_args(args, kwargs)
         new = self._parse(args, kwargs)
-        if self._pts and "color" in self._pts[-1]:
-            last = self._pts[-1]["color"]        # the last point's colour goes on
-            for pt in new:
-                pt.setdefault("color", last)
+        if is_lenient() and self._pts and "color" in self._pts[-1]:
+            for pt in new:                       # VPython 6: the last point's colour goes on
+                pt.setdefault("color", self._pts[-1]["color"])
         self._pts.extend(new)
         self._appended += len(new)
-        self._trim(None if retain is None or retain < 0 else max(retain, 1))
+        self._trim(retain)
 
-    def _v6_append_args(self, args: tuple, kwargs: dict) -> int | None:
+    def _v6_append_args(self, args: tuple, kwargs: dict) -> tuple[tuple, int | None]:
         """VPython 6's ``append(pos, color, retain)`` and ``append(pos, red=, green=,
-        blue=, retain=)`` (``arrayprim.cpp``): a second and third argument are the point's
-        colour and how many points to keep (0: the new one alone); returns that number."""
-        for name, value in zip(("color", "retain"), args[1:]):
-            if name in kwargs:
-                raise TypeError(f"append() got multiple values for argument {name!r}")
-            kwargs[name] = value
-        parts = {c: kwargs.pop(c) for c in ("red", "green", "blue") if c in kwargs}
+        blue=, retain=)`` (``arrayprim.cpp``): the point and how many points to keep
+        (0: the new one alone; None: the curve's ``retain``)."""
+        if _v6_colour_args(args):
+            kwargs.update(zip(("color", "retain"), args[1:]))
+            args = args[:1]
+        parts = {"rgb".index(c[0]): kwargs.pop(c) for c in ("red", "green", "blue")
+                 if c in kwargs}
         if parts and "color" not in kwargs:
-            last = self._pts[-1].get("color", self._color) if self._pts else self._color
-            rgb = list(last._xyz())
-            for c, value in parts.items():
-                rgb[("red", "green", "blue").index(c)] = float(value)
+            rgb = list((self._pts[-1].get("color", self._color) if self._pts
+                        else self._color)._xyz())
+            for i, value in parts.items():
+                rgb[i] = float(value)
             kwargs["color"] = vector(*rgb)
         retain = kwargs.pop("retain", None)
-        return None if retain is None else int(retain)
+        return args, None if retain is None or retain < 0 else max(int(retain), 1)
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
@@ -425,11 +384,9 @@ class _PointList(_Base):
 
     def _values(self, field: str) -> np.ndarray:
         """The points' positions or colours as an (n, 3) array."""
-        if field == "pos":
-            xyz = [p["pos"]._xyz() for p in self._pts]
-        else:
-            c0 = self._color
-            xyz = [p.get("color", c0)._xyz() for p in self._pts]
+        c0 = self._color
+        xyz = [p["pos"]._xyz() for p in self._pts] if field == "pos" else \
+            [p.get("color", c0)._xyz() for p in self._pts]
         return np.array(xyz, dtype=float).reshape(-1, 3)
 
     def _array(self, field: str) -> LivePoints:
@@ -439,12 +396,11 @@ class _PointList(_Base):
         entry, stamp = self._live.get(field), self._stamp()
         if entry is None or entry[2] != stamp:
             values = self._values(field)
-            if entry is not None and entry[0].shape == values.shape:
-                entry[0][...] = values
-                entry[1][...] = values
-                entry[2] = stamp
-            else:
+            if entry is None or entry[0].shape != values.shape:
                 entry = self._live[field] = [values, values.copy(), stamp]
+            else:                                  # refilled: views held stay live
+                entry[0][...] = entry[1][...] = values
+                entry[2] = stamp
         view = entry[0].view(LivePoints)
         view._owner = (self, field, entry[0])
         return view
@@ -455,8 +411,7 @@ class _PointList(_Base):
         if entry is None or entry[0] is not array:
             return                               # an array since replaced: no longer live
         seen = entry[1]
-        changed = np.flatnonzero((array != seen).any(axis=1))
-        changed = changed[changed < len(self._pts)]
+        changed = np.flatnonzero((array != seen).any(axis=1)[:len(self._pts)])
         if not changed.size:
             return
         current = entry[2] == self._stamp()
@@ -515,10 +470,6 @@ class _PointList(_Base):
             if value.ndim != 1:
                 raise ValueError(f"{name} must be a 1D array.")
             self._resize(len(value))
-        entry = self._live.get(field)
-        if entry is not None and entry[2] == self._stamp() and \
-                np.ndim(value) == 1 and np.array_equal(entry[0][:, i], value):
-            return                                # c.x *= 2: written in place already
         rows = self._values(field)
         rows[:, i] = value
         self._set_rows(field, rows)
@@ -561,11 +512,9 @@ def _column(name: str) -> property:
     def read(self):
         if is_lenient():
             return self._array(field)[:, i]
-        try:
+        if name in self.__dict__:
             return self.__dict__[name]
-        except KeyError:
-            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}") \
-                from None
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
 
     def write(self, value) -> None:
         if is_lenient():
