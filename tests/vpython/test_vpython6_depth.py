@@ -13,6 +13,7 @@ import pytest
 
 from conftest import ROOT
 from springscene.vpython.core.canvases import canvas
+from springscene.vpython.core.vectors import vector
 from springscene.vpython.objects.curves import LivePoints, curve
 from springscene.vpython.record.reader import lines, read
 from springscene.vpython.run.options import RunOptions
@@ -137,6 +138,9 @@ def test_live_arrays_views_copies_and_numpy_writers(lenient):
     pos[1] = pos[1]                                            # nothing changes: no edit
     assert c._edits == edits + 1
     assert type(pos * 2) is np.ndarray and type(pos.sum(axis=0)) is np.ndarray
+    pos[2] += vector(1, 0, 0)                                  # a vector, in place
+    assert c._pts[2]["pos"].value == [3, 0, 5]
+    assert (vector(1, 1, 1) - pos).tolist()[2] == [-2, 1, -4]  # a vector less the rows
     c.append(pos=(3, 0, 0))
     pos[0, 0] = -1                                             # an old view still writes
     assert c._pts[0]["pos"].x == -1 and c.pos.shape == (4, 3)

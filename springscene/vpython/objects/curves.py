@@ -33,9 +33,7 @@ def _plain(value):
     """A value numpy can take: a live array as a plain one, a vector as its 3 numbers."""
     if isinstance(value, LivePoints):
         return value.view(np.ndarray)
-    if isinstance(value, vector):
-        return np.array(value._xyz())
-    return value
+    return np.array(value._xyz()) if isinstance(value, vector) else value
 
 
 class LivePoints(np.ndarray):
@@ -52,9 +50,8 @@ class LivePoints(np.ndarray):
             else None
 
     def _wrote(self) -> None:
-        owner = self._owner
-        if owner is not None:
-            owner[0]._array_written(owner[1], owner[2])
+        if self._owner is not None:
+            self._owner[0]._array_written(*self._owner[1:])
 
     def __setitem__(self, key, value) -> None:
         super().__setitem__(key, _plain(value))
@@ -74,6 +71,10 @@ class LivePoints(np.ndarray):
 
     def __repr__(self) -> str:
         return repr(self.view(np.ndarray))
+
+
+for _op in ("__iadd__", "__isub__", "__imul__", "__itruediv__"):   # a vector: its 3 numbers
+    setattr(LivePoints, _op, lambda self, v, _f=getattr(np.ndarray, _op): _f(self, _plain(v)))
 
 
 def _is_table(value) -> bool:
@@ -438,12 +439,10 @@ class _PointList(_Base):
     def _same(self, field: str, rows: np.ndarray) -> bool:
         """The rows are the points already (``c.pos += v`` writes in place, then sets;
         ``c.pos = c.ends`` each frame): no change to record."""
-        if len(rows) != len(self._pts):
-            return False
         entry = self._live.get(field)
-        if entry is not None and entry[2] == self._stamp():
-            return np.array_equal(entry[0], rows)
-        return np.array_equal(self._values(field), rows)
+        held = entry[0] if entry is not None and entry[2] == self._stamp() else None
+        return len(rows) == len(self._pts) and np.array_equal(
+            self._values(field) if held is None else held, rows)
 
     def _set_rows(self, field: str, rows: np.ndarray) -> None:
         """``c.pos = array`` or ``c.color = array``: the points, resized to the rows."""
