@@ -58,10 +58,9 @@ class LivePoints(np.ndarray):
         self._wrote()
 
     def __array_ufunc__(self, ufunc, method, *inputs, out=None, **kwargs):
-        inputs = tuple(_plain(x) for x in inputs)
         if out is not None:
             kwargs["out"] = tuple(_plain(o) for o in out)
-        result = getattr(ufunc, method)(*inputs, **kwargs)
+        result = getattr(ufunc, method)(*(_plain(x) for x in inputs), **kwargs)
         if out is None:
             return result
         for o in out:
@@ -303,12 +302,11 @@ class _PointList(_Base):
         if _v6_colour_args(args):
             kwargs.update(zip(("color", "retain"), args[1:]))
             args = args[:1]
-        parts = {"rgb".index(c[0]): kwargs.pop(c) for c in ("red", "green", "blue")
-                 if c in kwargs}
+        parts = [(i, kwargs.pop(c)) for i, c in enumerate(("red", "green", "blue")) if c in kwargs]
         if parts and "color" not in kwargs:
             rgb = list((self._pts[-1].get("color", self._color) if self._pts
                         else self._color)._xyz())
-            for i, value in parts.items():
+            for i, value in parts:
                 rgb[i] = float(value)
             kwargs["color"] = vector(*rgb)
         retain = kwargs.pop("retain", None)
@@ -411,14 +409,13 @@ class _PointList(_Base):
         entry = self._live.get(field)
         if entry is None or entry[0] is not array:
             return                               # an array since replaced: no longer live
-        seen = entry[1]
-        changed = np.flatnonzero((array != seen).any(axis=1)[:len(self._pts)])
+        changed = np.flatnonzero((array != entry[1]).any(axis=1)[:len(self._pts)])
         if not changed.size:
             return
         current = entry[2] == self._stamp()
-        for k in changed.tolist():
-            self._pts[k][field] = vector(*array[k])
-        seen[changed] = array[changed]
+        for k, row in zip(changed.tolist(), array[changed].tolist()):
+            self._pts[k][field] = vector(*row)
+        entry[1][changed] = array[changed]
         self._changed()
         if current:
             entry[2] = self._stamp()
@@ -429,8 +426,7 @@ class _PointList(_Base):
         pts = self._pts
         if n == len(pts):
             return
-        if n < len(pts):
-            del pts[:len(pts) - n]
+        del pts[:max(len(pts) - n, 0)]
         while len(pts) < n:
             last = pts[-1] if pts else {"pos": vector(0, 0, 0)}
             pts.append({k: vector(v) if isinstance(v, vector) else v for k, v in last.items()})
@@ -469,6 +465,10 @@ class _PointList(_Base):
             if value.ndim != 1:
                 raise ValueError(f"{name} must be a 1D array.")
             self._resize(len(value))
+            entry = self._live.get(field)
+            if entry is not None and entry[2] == self._stamp() and \
+                    np.array_equal(entry[0][:, i], value):
+                return                            # c.x *= 2: written in place already
         rows = self._values(field)
         rows[:, i] = value
         self._set_rows(field, rows)
