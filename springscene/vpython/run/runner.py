@@ -96,13 +96,16 @@ class ProgramRaised(ProgramError):
     ``error`` is what the recording's end line keeps (docs/recording.md): the exception's
     ``type`` and ``message``, the program time ``t`` it was raised at, the program's
     ``line`` and its ``traceback``. A program that raised before its first frame has no
-    ``result``: nothing was written.
+    ``result``: nothing was written. :func:`springscene.run_vpython` gives the run up to
+    the error as ``run`` (a ``Run``, when there is a recording) and ``video`` (a
+    ``Video``, for a video or still output).
     """
 
     def __init__(self, traceback_text: str, error: dict,
                  result: ProgramResult | None = None) -> None:
         super().__init__(traceback_text)
         self.traceback, self.error, self.result = traceback_text, error, result
+        self.run = self.video = None
 
     def __str__(self) -> str:
         if self.result is None:
