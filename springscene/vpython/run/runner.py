@@ -205,18 +205,18 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
             ended = _execute(code, path, dialect, timeline, _capturer(out, film, images),
                              request.limit, film, names, on_end, recorder)
         except ProgramRaised as exc:      # after its first frame: the files up to it
+            exc.error["t"] = timeline.seconds
             if timeline.frames == 0:
                 film.close(False)
                 raise
             raised, ended = exc, "error"
-            exc.error["t"] = timeline.seconds
         except BaseException:
             film.close(False)
             raise
         try:
-            result = _finish(film, recorder, timeline, tmp, request, options, data_only,
-                             ended, dialect, start, images, _end(recorder, timeline, ended,
-                                                                 names, given, raised))
+            result = _finish(film, recorder, timeline, tmp, request, options, ended,
+                             dialect.name, start, images,
+                             lambda: _end(recorder, timeline, ended, names, given, raised))
         except Exception as failure:      # the program's error still comes first
             if raised is None:
                 raise
@@ -231,18 +231,20 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
 
 
 def _finish(film: Film, recorder: Recorder | None, timeline: runtime.Timeline, tmp: Path,
-            request, options: RunOptions, data_only: bool, ended: str, dialect,
-            start: float, images: list[Path], end: Callable[[], dict]) -> ProgramResult:
+            request, options: RunOptions, ended: str, dialect: str, start: float,
+            images: list[Path], end: Callable[[], dict]) -> ProgramResult:
     """The run's files once the program has ended (or raised): the last frames, the
-    recording's end line, the graphs and the page."""
+    recording's end line (``end()``, once its last frame is taken), the graphs and the
+    page."""
     out, still = request.out, request.still
+    data_only = out.suffix.lower() in DATA_FORMATS
     attachments.update()      # the render after the program's last step
     _last_frames(film, recorder, timeline, tmp, still, data_only, ended)
     frames = (1 if still else recorder.frames if data_only else film.frames)
     result = ProgramResult(out, frames, options.fps,
                            timeline.seconds, time.perf_counter() - start, ended,
                            size=film.writer.size if film.writer is not None else film.size,
-                           dialect=dialect.name)
+                           dialect=dialect)
     if recorder is not None:
         _close_recording(recorder, result, options, tmp, end())
     if not data_only:
@@ -341,19 +343,17 @@ def _frame_taker(film: Film, recorder: Recorder | None, still: bool, data_only: 
     return take
 
 
-def _end(recorder: Recorder | None, timeline: runtime.Timeline, ended: str, names: dict,
-         given: dict, raised: ProgramRaised | None = None) -> Callable[[], dict]:
-    """The recording's end line (docs/recording.md), made once its last frame is taken:
-    the program's own globals, not the names VPython gave it (``given``, the namespace it
-    started with, or ``vpython``'s); the program's error, when it ended in one."""
-    def end() -> dict:
-        own = {name: v for name, v in names.items()
-               if given.get(name, _NONE) is not v and getattr(vp, name, _NONE) is not v}
-        held, values = recorder.names(own)
-        return {"t": timeline.seconds, "frames": recorder.frames, "ended": ended,
-                "error": None if raised is None else raised.error,
-                "names": held, "globals": values}
-    return end
+def _end(recorder: Recorder, timeline: runtime.Timeline, ended: str, names: dict,
+         given: dict, raised: ProgramRaised | None = None) -> dict:
+    """The recording's end line (docs/recording.md): the program's own globals, not the
+    names VPython gave it (``given``, the namespace it started with, or ``vpython``'s);
+    the program's error, when it ended in one."""
+    own = {name: v for name, v in names.items()
+           if given.get(name, _NONE) is not v and getattr(vp, name, _NONE) is not v}
+    held, values = recorder.names(own)
+    return {"t": timeline.seconds, "frames": recorder.frames, "ended": ended,
+            "error": None if raised is None else raised.error,
+            "names": held, "globals": values}
 
 
 def _timing_notes(timeline: runtime.Timeline, fps: int, ended: str,
