@@ -209,3 +209,10 @@ def test_the_command_writes_the_files_up_to_the_error_and_says_where(tmp_path):
     assert count_frames(out / "run.mp4") == FRAMES
     check_ends_at_the_error(iio.imread(out / "run.mp4", index=None))
     check_recording(read(out / "run.jsonl"))
+    # the API's supervised run to a recording alone: the run up to the error comes back
+    with pytest.raises(ProgramError) as raised:
+        springscene.run_vpython(PROGRAM, fps=FPS)
+    assert str(raised.value).endswith(SAID.format("recording"))
+    run = raised.value.run
+    assert run.frames == FRAMES and run.times[-1] == T and run.ended == "error"
+    assert run.error == read(out / "run.jsonl").error
