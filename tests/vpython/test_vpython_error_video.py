@@ -188,7 +188,7 @@ def test_sys_exit_after_frames_writes_nothing_as_before(tmp_path):
         sys.exit(3)
     """)
     with pytest.raises(ProgramExit):
-        run_program(prog, tmp_path / "x.mp4", RunOptions(fps=FPS))
+        run_program(prog, tmp_path / "x.mp4", RunOptions(fps=FPS, page=False))
     assert os.listdir(tmp_path) == ["prog.py"]
 
 
