@@ -46,6 +46,7 @@ from .settings import Config
 from .view.overlay import parse_overlays
 from .vpython.record.reader import read as read_recording
 from .vpython.run.options import check_record
+from .vpython.run.runner import ProgramRaised
 
 __all__ = ["load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
            "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
@@ -481,7 +482,12 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     Raises
     ------
     ProgramError
-        The program raised: its own traceback.
+        The program raised: its own traceback. Raised after its first frame, the error's
+        ``error`` is its type, message and program time ``t`` (as ``Run.error``), its
+        ``run`` the :class:`Run` up to the error (``run.ended == "error"``; None for a
+        video without ``record=``) and, for a video or still, its ``video`` the
+        :class:`Video` up to the error: a test fails with the program's traceback, and
+        a grader who gives credit for the part that ran reads ``error.run``.
 
     Examples
     --------
@@ -497,22 +503,51 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
                        antialias=not draft, **options)
     if out is None:
         return _as_data(program, record, run_options)
-    result = jobs.vpython(program, out, record=None if record is None else str(record),
-                          **run_options)
+    try:
+        result = jobs.vpython(program, out, record=None if record is None else str(record),
+                              **run_options)
+    except ProgramRaised as exc:        # the files up to the error: its run and video
+        if exc.result is not None:
+            exc.run, exc.video = _output_run(exc.result)
+        raise
+    run, video = _output_run(result)
+    return run if video is None else video
+
+
+def _output_run(result) -> tuple[Run | None, Video | None]:
+    """A run to ``out``: its Run (the recording, ``.jsonl`` or ``record=``'s) and, for a
+    video or still, its Video."""
     if result.path.suffix.lower() == ".jsonl":       # the recording alone, kept as ``out``
-        return Run(read_recording(result.path), result, result.path)
+        return Run(read_recording(result.path), result, result.path), None
     kept = result.recording                          # (record=: the video's Run too)
-    return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
+    run = None if kept is None else Run(read_recording(kept), result, kept)
+    return run, Video(result, run)
 
 
 def _as_data(program, record, run_options: dict) -> Run:
     """The program run to a recording alone in a temporary folder, read back (and kept in
-    ``record``, when given)."""
+    ``record``, when given); a program's error after its first frame carries that run."""
     check_record(record)
     folder = Path(tempfile.mkdtemp(prefix="springscene-run-"))
+    scratch = folder / "run.jsonl"
     try:
-        scratch = folder / "run.jsonl"
         result = jobs.vpython(program, scratch, **run_options)
+    except ProgramRaised as exc:
+        if exc.result is None:
+            shutil.rmtree(folder, ignore_errors=True)
+        else:
+            exc.run = _scratch_run(folder, scratch, record, exc.result)
+        raise
+    except BaseException:
+        shutil.rmtree(folder, ignore_errors=True)
+        raise
+    return _scratch_run(folder, scratch, record, result)
+
+
+def _scratch_run(folder: Path, scratch: Path, record, result) -> Run:
+    """The Run of the recording ``scratch`` (kept in ``record`` too, when given); the
+    temporary ``folder`` goes with it."""
+    try:
         recording = read_recording(scratch)
         if record is not None:
             _keep(scratch, Path(record))

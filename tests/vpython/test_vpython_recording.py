@@ -204,7 +204,7 @@ def test_gzip_and_a_recording_cut_short(tmp_path):
         read(tmp_path / "other.jsonl")
 
 
-def test_a_program_error_leaves_no_recording(tmp_path):
+def test_a_program_error_keeps_the_recording_up_to_it(tmp_path):
     prog = write(tmp_path, """
         from vpython import *
         b = sphere()
@@ -216,7 +216,12 @@ def test_a_program_error_leaves_no_recording(tmp_path):
     with pytest.raises(ProgramError, match="no more data"):
         run_program(prog, tmp_path / "v.mp4", RunOptions(fps=10, antialias=False,
                                                          record=str(tmp_path / "r.jsonl")))
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py", "r.jsonl", "v.html",
+                                                          "v.mp4"]
+    rec = read(tmp_path / "r.jsonl")
+    assert rec.times[-1] == 1.0 and len(rec.times) == 11 and rec["b"].pos[-1, 0] == 10
+    assert (rec.error["type"], rec.error["message"], rec.error["t"], rec.error["line"]) == (
+        "ValueError", "no more data", 1.0, 7)
 
 
 @pytest.mark.parametrize("args, message", [
