@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 from conftest import ROOT
+from springscene.vpython.dialects import visual6
 from springscene.vpython.draw import surface_meshes
 from springscene.vpython.objects.array_surfaces import convex, faces
 from springscene.vpython.objects.frames import frame
@@ -207,8 +208,6 @@ def test_in_a_frame_the_points_are_the_frames(vp):
 
 
 def test_the_visual_namespace_has_them(vp):
-    from springscene.vpython.dialects import visual6
-
     names = visual6.namespace(vp)
     assert names["faces"] is faces and names["convex"] is convex
 

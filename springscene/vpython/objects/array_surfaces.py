@@ -38,13 +38,14 @@ from ..core.attributes import Linked
 from ..core.vectors import vector
 from .base import _Base
 
+
 def _rows(value, name: str) -> np.ndarray:
     """``value`` as a float array: one row (3,) for a single vector, else (N, 2 or 3)."""
     if isinstance(value, vector):
         return np.array(value._xyz(), dtype=float)
-    if not isinstance(value, np.ndarray):
-        value = [v._xyz() if isinstance(v, vector) else v for v in value]
     try:
+        if not isinstance(value, np.ndarray):
+            value = [v._xyz() if isinstance(v, vector) else v for v in value]
         a = np.array(value, dtype=float)
     except (TypeError, ValueError):
         raise ValueError(f"{name} must be an Nx3 array") from None
@@ -98,11 +99,13 @@ class PointArrays:
         self.buffers[name][:self.count] = a
 
     def column(self, name: str, index: int, value) -> None:
-        """One column (``x``, ``red``): an array sets the length, a number every row."""
+        """One column (``x``, ``red``): an array sets the length, a number every row
+        (a first point for ``x``, ``y``, ``z`` when there is none)."""
         a = np.asarray(value, dtype=float)
         if a.ndim == 0:
-            self.resize(max(self.count, 1))
-            self.buffers[name][:self.count, index] = a
+            if name == "pos":
+                self.resize(max(self.count, 1))
+            self.buffers[name][:max(self.count, 1), index] = a
             return
         if a.ndim != 1:
             raise ValueError(f"{name} component must be a 1D array")
@@ -157,11 +160,11 @@ class _ArraySurface(_Base):
         self._shininess = 0.6
         self._emissive = False
         self._register(args)        # canvas (display), frame
-        white = self._canvas.foreground._xyz()
-        self._arrays = PointArrays(self._names, {"color": white} if "color" in self._names
+        first = self._canvas.foreground._xyz()        # VPython 6's default colour
+        self._arrays = PointArrays(self._names, {"color": first} if "color" in self._names
                                    else {})
         if "color" not in self._names:
-            self._color = vector(*white)
+            self._color = vector(*first)
         self._setup(args)
         for name, value in args.items():        # the program's own attributes, material
             setattr(self, name, value)
