@@ -453,20 +453,16 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     Parameters
     ----------
     program : str or Path
-        A VPython 7, VPython 6 or Web VPython program (``springscene.init("bounce")``
-        copies an example).
+        A VPython 7, VPython 6 or Web VPython program.
     out : str or Path, optional
         None: nothing drawn, the run as a :class:`Run`. ``.mp4``, ``.gif``, ... or
         ``.png``: a video or still of the page, a :class:`Video`. ``.jsonl``: the
         recording alone, kept there, as a :class:`Run`.
     duration, frames, fps : optional
-        Program seconds or frames to run (default 10 s, or until the program ends); frames
-        a program second (a :class:`Run` holds the objects at each frame).
-    draft, backend : optional
-        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``).
-    record : str or Path, optional
-        Keep the recording (docs/recording.md) in this ``.jsonl`` or ``.jsonl.gz`` file;
-        a :class:`Video`'s ``run`` is then its :class:`Run`.
+        Program seconds or frames to run (default 10 s or its end); frames a second.
+    draft, backend, record : optional
+        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``); a
+        ``.jsonl[.gz]`` file to keep the recording in (docs/recording.md; ``Video.run``).
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
         (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout`` and
@@ -475,19 +471,16 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     Returns
     -------
     Run or Video
-        A :class:`Run`: objects by the program's own names with their attributes over the
-        frames, graphs, printed text, globals. A :class:`Video`: the file and its frames,
-        the program's ``scene.capture`` pictures in ``images``.
+        A :class:`Run`: objects by the program's names, their attributes over the frames,
+        graphs, printed text, globals. A :class:`Video`: the file, its frames, ``images``.
 
     Raises
     ------
     ProgramError
-        The program raised: its own traceback. Raised after its first frame, the error's
-        ``error`` is its type, message and program time ``t`` (as ``Run.error``), its
-        ``run`` the :class:`Run` up to the error (``run.ended == "error"``; None for a
-        video without ``record=``) and, for a video or still, its ``video`` the
-        :class:`Video` up to the error: a test fails with the program's traceback, and
-        a grader who gives credit for the part that ran reads ``error.run``.
+        The program raised: its own traceback (a test fails with it). After its first
+        frame, ``error.error`` holds its type, message and time ``t``, ``error.run`` the
+        :class:`Run` up to it (None for a video without ``record=``), ``error.video`` the
+        :class:`Video` up to it: credit for the part that ran.
 
     Examples
     --------
@@ -507,8 +500,7 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
         result = jobs.vpython(program, out, record=None if record is None else str(record),
                               **run_options)
     except ProgramRaised as exc:        # the files up to the error: its run and video
-        if exc.result is not None:
-            exc.run, exc.video = _output_run(exc.result)
+        exc.run, exc.video = _output_run(exc.result) if exc.result else (None, None)
         raise
     run, video = _output_run(result)
     return run if video is None else video

@@ -163,18 +163,13 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                 on_end: Callable | None = None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF, ...) or final still (PNG).
 
-    A frame is the program's page as VPython lays it out (titles, canvases, captions,
-    graphs: :mod:`..page.film`), or with ``options.canvas_only`` the first canvas alone at
-    its own size. Beside ``out`` go ``<out's name>.html`` (the page VPython would show,
-    with the video), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
-    ``on_frame(index, image)`` is called for each frame taken (for tests);
-    ``on_dialect(dialect)`` once the program's dialect is known, before it runs;
-    ``on_end(error)`` once the program has ended (:class:`.session.ProgramSession`).
-
-    A program that raises after its first frame time has its files written up to the
-    error (the video's last frame, a still's picture and the recording's last frame are
-    the scene at the error) and raises :class:`ProgramRaised` with them as ``result``;
-    one that raises before writes nothing.
+    A frame is the program's page as VPython lays it out (:mod:`..page.film`), or with
+    ``options.canvas_only`` the first canvas alone. Beside ``out`` go its page
+    (``.html``), graphs and ``scene.capture`` PNGs. ``on_frame(index, image)`` is called
+    for each frame (tests), ``on_dialect(dialect)`` before the program runs, ``on_end(error)``
+    once it ended (:class:`.session.ProgramSession`). A program that raises after its
+    first frame has its files written up to the error, the scene at the error their last
+    frame, and raises :class:`ProgramRaised` with them (``result``); before, nothing.
     """
     request = check_request(program, out, options)
     path, out, still = request.program, request.out, request.still
@@ -200,19 +195,9 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                                     _frame_taker(film, recorder, still, data_only, on_frame))
         # at each of VPython's renders: attached trails and arrows move, autoscale widens
         timeline.on_render = lambda: (attachments.update(), autoscale.at_render())
-        raised = None
-        try:
-            ended = _execute(code, path, dialect, timeline, _capturer(out, film, images),
-                             request.limit, film, names, on_end, recorder)
-        except ProgramRaised as exc:      # after its first frame: the files up to it
-            exc.error["t"] = timeline.seconds
-            if timeline.frames == 0:
-                film.close(False)
-                raise
-            raised, ended = exc, "error"
-        except BaseException:
-            film.close(False)
-            raise
+        ended, raised = _until_end(film, timeline, lambda: _execute(
+            code, path, dialect, timeline, _capturer(out, film, images), request.limit, film,
+            names, on_end, recorder))
         try:
             result = _finish(film, recorder, timeline, tmp, request, options, ended,
                              dialect.name, start, images,
@@ -228,6 +213,24 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
         result.error, raised.result = raised.error, result
         raise raised
     return result
+
+
+def _until_end(film: Film, timeline: runtime.Timeline,
+               execute: Callable[[], str]) -> tuple[str, ProgramRaised | None]:
+    """Run the program (``execute``): how it ended, and its error when it raised after its
+    first frame (its files up to the error are still to be written); an error before
+    that, or any other, is raised with the film closed unwritten."""
+    try:
+        return execute(), None
+    except ProgramRaised as exc:
+        exc.error["t"] = timeline.seconds
+        if timeline.frames > 0:
+            return "error", exc
+        film.close(False)
+        raise
+    except BaseException:
+        film.close(False)
+        raise
 
 
 def _finish(film: Film, recorder: Recorder | None, timeline: runtime.Timeline, tmp: Path,
