@@ -308,9 +308,24 @@ def hoist_functions(tree: ast.Module) -> ast.Module:
     return tree
 
 
+class _ExtraArguments(ast.NodeTransformer):
+    """``def f(x, y)`` called as ``f(0, 0, 0)``: a JavaScript function (RapydScript makes
+    one of each ``def``) ignores the arguments it has no parameter for, so each of the
+    program's functions without a ``*args`` takes and ignores them."""
+
+    def visit_FunctionDef(self, node: ast.FunctionDef) -> ast.AST:
+        self.generic_visit(node)
+        if node.args.vararg is None:
+            node.args.vararg = ast.copy_location(ast.arg("__gs_ignored__"), node)
+        return node
+
+    visit_AsyncFunctionDef = visit_FunctionDef
+
+
 def transform(tree: ast.Module) -> ast.Module:
     """The GlowScript leniencies CPython lacks, put into a parsed program."""
     tree = _TextPlus().visit(tree)
+    tree = _ExtraArguments().visit(tree)
     tree = _IsLiteral().visit(tree)
     tree = _Push().visit(tree)
     tree = hoist_functions(tree)
