@@ -68,8 +68,7 @@ def _version(text: str) -> tuple[int, ...]:
 
 def detect(source: str) -> Dialect:
     """The dialect of ``source``, from its header line or its imports."""
-    first = next((line for line in source.splitlines() if line.strip()), "")
-    m = _HEADER.match(first)
+    m = _HEADER.match(_first_code(source.splitlines()))
     if m:
         return _glowscript(m)
     imports_vpython = _VPYTHON.search(source)
@@ -106,12 +105,17 @@ def _first_lines(source: str, count: int = 6) -> list[str]:
 def strip_header(source: str) -> str:
     """The source with its GlowScript header line blanked (so line numbers stay)."""
     lines = source.splitlines(keepends=True)
-    for i, line in enumerate(lines):
-        if line.strip():
-            if _HEADER.match(line):
-                lines[i] = "\n"
-            break
+    first = _first_code(lines)
+    if _HEADER.match(first):
+        lines[lines.index(first)] = "\n"
     return "".join(lines)
+
+
+def _first_code(lines: list[str]) -> str:
+    """The first line that is neither blank nor a comment (the header's place; comments
+    such as ``# -*- coding: utf-8 -*-`` may come before it in a saved file)."""
+    return next((line for line in lines if line.strip()
+                 and not line.lstrip().startswith("#")), "")
 
 
 def _is_text(node: ast.AST) -> bool:
@@ -176,8 +180,10 @@ def _js_number(x: float) -> str:
 
 def _js_scalar(value: Any) -> bool:
     """A value JavaScript's ``+`` writes into text by itself (a number, a bool, None, a
-    vector); anything else keeps Python's ``+`` (and its ``__radd__``)."""
-    return value is None or isinstance(value, numbers.Number) or hasattr(value, "_xyz")
+    vector, a list: a JavaScript array); anything else keeps Python's ``+`` (and its
+    ``__radd__``)."""
+    return value is None or isinstance(value, (numbers.Number, list, tuple)) or \
+        hasattr(value, "_xyz")
 
 
 def js_text(value: Any) -> str:
@@ -190,6 +196,8 @@ def js_text(value: Any) -> str:
         return _js_number(value)
     if hasattr(value, "_xyz"):
         return "< " + ", ".join(_js_number(c) for c in value._xyz()) + " >"
+    if isinstance(value, (list, tuple)):        # an array's toString: items joined by ","
+        return ",".join("" if v is None else js_text(v) for v in value)
     return str(value)
 
 
@@ -206,7 +214,8 @@ def gs_add(a: Any, b: Any) -> Any:
 def gs_iadd(a: Any, b: Any) -> Any:
     """``a += b``: joined as :func:`gs_add` for text and a number, else Python's ``+=``
     (a list extended in place)."""
-    if isinstance(a, str) or (isinstance(b, str) and _js_scalar(a)):
+    if isinstance(a, str) or (isinstance(b, str) and _js_scalar(a)
+                              and not isinstance(a, list)):
         return gs_add(a, b)
     a += b
     return a
