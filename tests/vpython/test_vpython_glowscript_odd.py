@@ -154,6 +154,17 @@ def test_return_assign_binds_where_javascript_binds():
         "syntax, as GlowScript reads it)"]
 
 
+def test_return_assign_after_a_colon_on_one_line():
+    names = run_source("""
+        best = 0
+        def keep(v):
+            if v > best: return best = v
+            return best
+        got = [keep(3), keep(1)]
+    """)
+    assert (names["got"], names["best"]) == ([3, 3], 3)      # RapydScript-NG: 3 3 3
+
+
 def test_return_of_a_comparison_or_a_keyword_call_is_left_alone():
     src = "def f(a):\n    return a == 1\ndef g(a):\n    return h(b=a)\nx = y = 2\n"
     assert rapydscript.translate(src).source == src

@@ -2,16 +2,25 @@
 
 Three dialects run unmodified:
 
-- **VPython 7** (``from vpython import *``, ``import vpython``): run as it is.
+- **VPython 7** (``from vpython import *``, ``import vpython``): run as it is. One
+  converted from GlowScript (its header left as a comment, ``#GlowScript 3.0 VPython``)
+  also gets the GlowScript names it uses and never defines (``display``, ``gdisplay``;
+  ``range`` of floats), with a note (:func:`.glowscript.converted_names`).
 - **VPython 6** (``from visual import *``, ``import visual``, ``visual.graph``, ...):
   run as it is, with :mod:`.visual6`'s modules importable and VPython 6's vectors
   (tuples as vectors, vectors as sequences) turned on for the run.
-- **Web VPython / GlowScript** (first line ``GlowScript 3.2 VPython`` or
-  ``Web VPython 3.2``; no imports): the header is blanked (line numbers stay), the
-  program runs with the names its page gives it (VPython's, math's, ``random()``,
-  ...; :func:`springscene.vpython.dialects.glowscript.names`), and the leniencies of its compiler that CPython
-  lacks are put in: ``"t = " + t`` concatenates a string and a number, as
-  JavaScript does.
+- **Web VPython / GlowScript** (first line ``GlowScript 3.2 VPython``, ``GlowScript 1.1
+  VPython``, ``Web VPython 3.2``, or that header left as a comment in a program that
+  imports nothing; no imports): the header is blanked (line numbers stay), the program
+  runs with the names its page gives it (VPython's, math's, ``random()``, ...;
+  :func:`.glowscript.names`, by the header's version), and the leniencies of its compiler
+  that CPython lacks are put in: ``"t = " + t`` concatenates a string and a number, as
+  JavaScript does; a function ignores extra arguments; RapydScript's ``else if``,
+  ``return x = y`` and ``def`` as an expression are read as Python
+  (:mod:`.rapydscript`, with a note naming the lines); GlowScript 1.x and 2.0's
+  ``scene.caption.text(s)``. A JavaScript program (``GlowScript 3.2 JavaScript``,
+  ``JavaScript 3.2``, or ``GlowScript 3.2`` with no language, which GlowScript reads as
+  JavaScript, when it is not Python) is refused in one line.
 
 :func:`detect` reads the source; :func:`compile_program` gives the code to run.
 """

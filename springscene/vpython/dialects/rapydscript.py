@@ -108,8 +108,8 @@ def translate(source: str) -> Translation:
         result.source = "".join(lines)
     lines = result.source.splitlines(keepends=True)
     for toks in _logical_lines(_tokens(result.source)):
+        _return_assign(lines, toks, result)     # (edits right of an ``else if``'s)
         _else_if(lines, toks, result)
-        _return_assign(lines, toks, result)
     result.source = "".join(lines)
     return result
 
@@ -121,6 +121,7 @@ def _edit(lines: list[str], row: int, start: int, end: int, text: str) -> None:
 
 
 def _else_if(lines: list[str], toks: list[tokenize.TokenInfo], result: Translation) -> None:
+    """A logical line beginning ``else if`` begins ``elif``."""
     if len(toks) > 2 and toks[0].string == "else" and toks[1].string == "if" \
             and toks[0].start[0] == toks[1].start[0]:
         row = toks[0].start[0]
@@ -128,11 +129,28 @@ def _else_if(lines: list[str], toks: list[tokenize.TokenInfo], result: Translati
         result.else_if.append(row)
 
 
+def _return_at(toks: list[tokenize.TokenInfo]) -> int | None:
+    """Where a logical line's ``return`` is: first, or after a compound statement's
+    colon on the same line (``if c: return x = y``)."""
+    depth = 0
+    for i, tok in enumerate(toks):
+        if tok.type == tokenize.OP and tok.string in _OPEN:
+            depth += 1
+        elif tok.type == tokenize.OP and tok.string in _CLOSE:
+            depth -= 1
+        elif depth == 0 and tok.type == tokenize.NAME and tok.string == "return" and \
+                (i == 0 or toks[i - 1].string == ":"):
+            return i
+    return None
+
+
 def _return_assign(lines: list[str], toks: list[tokenize.TokenInfo],
                    result: Translation) -> None:
     """``return T = V`` (or ``T += V``) → ``T = V; return T`` on the same lines."""
-    if toks[0].string != "return" or toks[0].type != tokenize.NAME:
+    at = _return_at(toks)
+    if at is None:
         return
+    toks = toks[at:]
     depth = 0
     for i, tok in enumerate(toks[1:-1], 1):
         if tok.type == tokenize.NAME and tok.string == "lambda":
@@ -152,12 +170,19 @@ def _return_assign(lines: list[str], toks: list[tokenize.TokenInfo],
     end_col = toks[-2].end[1]
     _edit(lines, last, end_col, end_col, f"; return {target}")
     _edit(lines, first, toks[0].start[1], toks[1].start[1], "")
+    result.return_assign[first] = _names_in(target)
+
+
+def _names_in(target: str) -> list[str]:
+    """The plain names an assignment's target binds (``a``, ``a, b``; none for ``a.x``,
+    ``a[0]``)."""
+    if not re.fullmatch(r"[\w\s,()]+", target):
+        return []
     try:
-        names = [n.id for n in ast.walk(ast.parse(target, mode="eval"))
-                 if isinstance(n, ast.Name)] if re.fullmatch(r"[\w\s,()]+", target) else []
+        return [n.id for n in ast.walk(ast.parse(target, mode="eval"))
+                if isinstance(n, ast.Name)]
     except SyntaxError:
-        names = []
-    result.return_assign[first] = names
+        return []
 
 
 def _anonymous_def(lines: list[str], logical: list[list[tokenize.TokenInfo]],
