@@ -212,6 +212,23 @@ def test_a_def_as_an_argument_runs_as_rapydscript_runs_it():
         "as GlowScript reads it)")
 
 
+def test_defs_in_lists_and_dicts_inside_a_block():
+    names = run_source("""
+        handlers = {}
+        if True:
+            handlers["a"] = [def (x):
+                return x + 1
+            , def (x):
+                return x * 10
+            ]
+            table = {'k': def (v):
+                return -v
+            }
+        got = [handlers["a"][0](1), handlers["a"][1](2), table['k'](3)]
+    """)
+    assert names["got"] == [2, 20, -3]                       # RapydScript-NG: 2 20 -3
+
+
 def test_a_program_that_parses_is_not_translated():
     names = run_source("""
         s = "else if"
