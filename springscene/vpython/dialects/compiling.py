@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from ...errors import UserError
+from .glowscript import before
 from .rapydscript import Translation, fix_tree, translate
 
 # ide.js (parseVersionHeader): the first line names the language and version
@@ -66,13 +67,6 @@ class Dialect:
     #: the names a converted program uses and never binds (:func:`compile_program`)
     unbound: set[str] = field(default_factory=set)
 
-    def before(self, version: str) -> bool:
-        """Whether this is a GlowScript older than ``version`` ("2.3")."""
-        return _version(self.version) < _version(version)
-
-
-def _version(text: str) -> tuple[int, ...]:
-    return tuple(int(p) for p in re.findall(r"\d+", text)) or (0,)
 
 
 def detect(source: str) -> Dialect:
@@ -413,7 +407,7 @@ def compile_program(source: str, filename: str, dialect: Dialect):
         raise
     tree = fix_tree(tree, done)
     dialect.notes.extend(done.notes())
-    if dialect.before("2.1"):
+    if before(dialect.version, "2.1"):
         tree = _JQueryText().visit(tree)
     return compile(transform(tree), filename, "exec")
 

@@ -28,6 +28,7 @@ from __future__ import annotations
 import builtins
 import math
 import random
+import re
 import time
 import types
 from typing import Any
@@ -143,14 +144,16 @@ def names(vp: types.ModuleType, version: str = "3.2") -> dict[str, Any]:
                  console=types.SimpleNamespace(log=print), version=[version, "glowscript"],
                  series=lambda **options: series(vp, **options), wait=None,
                  download=download, sleep=gs_sleep)
-    if _before(version, (2, 3)):       # RapydScript before -NG let JavaScript's through
+    if before(version, "2.3"):       # RapydScript before -NG let JavaScript's through
         found.update(true=True, false=False)
     return found
 
 
-def _before(version: str, than: tuple[int, ...]) -> bool:
-    parts = tuple(int(p) for p in version.split(".") if p.isdigit())
-    return parts < than
+def before(version: str, than: str) -> bool:
+    """Whether GlowScript ``version`` ("1.1", "3.3dev") is older than ``than``."""
+    def parts(text: str) -> tuple[int, ...]:
+        return tuple(int(p) for p in re.findall(r"\d+", text))
+    return parts(version) < parts(than)
 
 
 def converted_names(vp: types.ModuleType, unbound: set[str],
