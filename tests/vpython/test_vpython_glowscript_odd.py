@@ -385,6 +385,13 @@ def test_converted_program_keeps_its_own_names_and_python_range(tmp_path):
     assert "GlowScript's name" not in proc.stderr and "range()" not in proc.stderr
 
 
+def test_a_converted_programs_syntax_error_is_reported_as_python_does(tmp_path):
+    prog = write(tmp_path, "from vpython import *\n#GlowScript 3.0 VPython\nif x\n    pass\n")
+    proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
+    assert proc.returncode == 1
+    assert proc.stderr.startswith(f'  File "{prog}", line 3') and "ast.py" not in proc.stderr
+
+
 def test_a_vpython7_program_not_converted_gets_no_glowscript_names(tmp_path):
     prog = write(tmp_path, "from vpython import *\nscene = display()\n")
     proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")

@@ -389,7 +389,10 @@ def compile_program(source: str, filename: str, dialect: Dialect):
     in ``dialect.notes``; a converted VPython 7 program's unbound names are kept in
     ``dialect.unbound``."""
     if dialect.kind == "vpython7" and dialect.converted:
-        tree = ast.parse(source, filename, "exec")
+        try:
+            tree = ast.parse(source, filename, "exec")
+        except SyntaxError as exc:
+            raise exc.with_traceback(None) from None
         dialect.unbound = unbound_names(tree)
         return compile(tree, filename, "exec")
     if dialect.kind != "glowscript":
