@@ -14,7 +14,7 @@ for s in strings:
     s.momentum[:20, 1] = sin((s.x[:20] + 40)*pi/20.0)*2
 dt = 0.1
 t = 0
-while t < 2:
+while t < 8:
     rate(50)
     for s in strings:
         s.momentum[0] = s.momentum[-1] = vector(0, 0, 0)
