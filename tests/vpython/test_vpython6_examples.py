@@ -44,6 +44,16 @@ def kinds(rec) -> dict[str, int]:
     return out
 
 
+def extrusions(rec) -> list:
+    """The extrusions (recorded as compounds, as VPython 7 makes them; or as their own kind)."""
+    return [tr for tr in rec.objects if tr.kind in ("extrusion", "compound")]
+
+
+def extent(track) -> np.ndarray:
+    """An object's size at the end, smallest first (its box, whichever way it turned)."""
+    return np.sort(last(track, "size"))
+
+
 def last(track, attribute):
     return getattr(track, attribute)[-1]
 
@@ -100,8 +110,10 @@ def check_boxlighttest(rec):
 
 
 def check_conch(rec):
-    assert kinds(rec).get("extrusion") == 1
-    assert printed_numbers(rec) == [40]
+    assert set(kinds(rec)) <= {"extrusion", "compound"} and len(extrusions(rec)) == 1
+    assert printed_numbers(rec) == [40]                 # a path point each
+    rise, widest = 0.06 * 39, 2 * (0.05 * 0.25 * 39 + 0.5 * (0.2 + 0.02 * 39))
+    assert rise < extent(extrusions(rec)[0])[-1] < rise + widest     # the horn's length
 
 
 def check_crystal(rec):
@@ -130,7 +142,12 @@ def check_doublependulum(rec):
 
 
 def check_extruded_columns(rec):
-    assert kinds(rec) == {"extrusion": 7, "box": 1}
+    assert kinds(rec)["box"] == 1 and len(extrusions(rec)) == 7 == len(rec.objects) - 1
+    bodies = [tr for tr in extrusions(rec) if abs(extent(tr)[-1] - 2) < 0.05]
+    assert len(bodies) == 2                             # the two shafts, 2 tall
+    for body, x in zip(bodies, (-0.8, 0.8)):
+        assert 0.25 < extent(body)[1] < 0.31            # a 12-gon of radius 0.15
+        assert last(body, "pos")[[0, 1]] == pytest.approx([x, 1], abs=0.05)
 
 
 def check_faces_cone(rec):
@@ -222,7 +239,10 @@ def check_mandelbrot(rec):
 
 
 def check_medusa(rec):
-    assert kinds(rec) == {"extrusion": 4}
+    assert len(extrusions(rec)) == 4 == len(rec.objects)
+    for tail in rec["tails"]:
+        assert 1.45 < extent(tail)[-1] < 1.7            # 16 points 0.1 apart
+    assert extent(rec["bell"])[-1] == pytest.approx(1.6 + 0.04, abs=0.1)   # the crescent
 
 
 def check_orbit(rec):
@@ -309,7 +329,8 @@ def check_crossproduct(rec):
 
 
 def check_electric_motor(rec):
-    assert kinds(rec) == {"extrusion": 3, "cylinder": 1}
+    assert kinds(rec)["cylinder"] == 1 and len(extrusions(rec)) == 3 == len(rec.objects) - 1
+    assert extent(rec["core"]) == pytest.approx([2, 3, 3], abs=0.02)   # slots cut in the rim
     axis = rec["shaft"].axis
     assert np.allclose(axis, axis[0]) and np.allclose(np.linalg.norm(axis, axis=1), 4.5)
     up = rec["core"].up                                 # turning about the shaft
@@ -330,7 +351,10 @@ def check_gyro(rec):
 
 
 def check_differential_gear(rec):
-    assert kinds(rec) == {"extrusion": 2, "box": 1, "label": 1}
+    assert len(extrusions(rec)) == 2 == len(rec.objects) - 2
+    assert kinds(rec)["box"] == 1 and kinds(rec)["label"] == 1
+    big, small = last(rec["big"], "size"), last(rec["small"], "size")
+    assert 6 < np.sort(big)[-1] < 7.5 and np.sort(big)[-1] > 1.5 * np.sort(small)[-1]
     assert rec.globals["turns"] == 40
 
 
