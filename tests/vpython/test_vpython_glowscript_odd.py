@@ -287,6 +287,9 @@ def test_traceback_points_at_the_source_lines(tmp_path):
     assert f'File "{prog}", line 3, in call' in err
     assert f'File "{prog}", line 9, in anonymous_def_7\n    return y / 0' in err
     assert "ZeroDivisionError" in err
+    # how the program was read stands above its traceback, once
+    note = "springscene: note: line 6: `else if` read as `elif`"
+    assert err.count(note) == 1 and err.index(note) < err.index("Traceback")
 
 
 def test_a_real_syntax_error_is_reported_at_its_line(tmp_path):

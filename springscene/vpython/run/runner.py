@@ -175,13 +175,13 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     path, out, still = request.program, request.out, request.still
     data_only = out.suffix.lower() in DATA_FORMATS      # the recording (or its page) alone
     code, dialect = _compile(path)
-    if on_dialect is not None:
-        on_dialect(dialect)
     vp.reset()
     graph_images.reset()          # the graph figures of an earlier run in this process
     start = time.perf_counter()
     images: list[Path] = []
     names = _namespace(path, dialect)
+    if on_dialect is not None:    # with its notes: how the program was read
+        on_dialect(dialect)
     # the names the program is given, not its own (VPython 6's star import brings numpy's)
     given = {**(visual6.namespace(vp) if dialect.kind == "vpython6" else {}), **names}
     with contextlib.ExitStack() as files:
