@@ -32,6 +32,7 @@ import numpy as np
 from ..core import vectors as _vector_module
 from ..core.vectors import as_vector, vector
 from ..objects.frames import frame
+from ..objects.array_surfaces import convex, faces
 from . import visual6_extras as _extras
 from .visual6_extras import (button, controls, crayola, ghistogram, materials, menu, slider,
                              toggle)
@@ -240,6 +241,7 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
     names["sum"], names["any"], names["all"] = (_numpy_or_builtin(np.sum, sum),
                                                 _numpy_or_builtin(np.any, any),
                                                 _numpy_or_builtin(np.all, all))
+    names.update(faces=faces, convex=convex)        # VPython 6's array surfaces
     names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
     return names
 
