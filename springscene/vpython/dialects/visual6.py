@@ -14,6 +14,12 @@ numpy 2 is not star-imported: it would bind ``max``/``min``/``abs``/``round``/``
 over the builtins (``max(a, b)`` then means an axis). The names numpy 1.x gave and
 numpy 2 dropped (``float_``, ``Inf``, ``product``, ...) are put back.
 
+``mag``, ``mag2``, ``norm`` and ``cross`` also take N x 3 numpy arrays, row by row, as
+VPython 6's ``cvisual`` did (``src/python/wrap_vector.cpp``); ``dot`` is ``visual``'s,
+numpy's for arrays. ``color`` is VPython 6's (tuples from its functions), ``text``,
+``gcurve``/``gdots``/``gvbars``/``ghbars``, ``shapes`` and ``paths`` take VPython 6's
+positional arguments (:mod:`.visual6_extras`).
+
 Vectors: VPython 6 took tuples, lists and arrays wherever a vector goes and let a
 vector act as a sequence; :func:`springscene.vpython.core.vectors.set_lenient` turns that
 on for the run (the runner does it for VPython 6 programs).
