@@ -404,50 +404,46 @@ def needs(feature: str):
     return pytest.mark.xfail(strict=True, reason=f"needs {feature}")
 
 
-CURVE_ARRAYS = "a curve's points as numpy arrays (pos, x, y, z)"
 EXTRUSION_POS = "extrusion's path given as pos= (VPython 6)"
 POLYGONS = "VPython 6's shapes as Polygons (-, +, contour)"
-HSV_TUPLE = "color.hsv_to_rgb of a tuple"
-GRAPH_ALL = "from visual.graph import * giving all of visual"
-TEXTURE_DATA = "materials.texture(data=...) from an array"
 
 EXAMPLES = {
     "bounce": check_bounce,
     "bounce2": check_bounce2,
     "boxlighttest": check_boxlighttest,
     "conch": (check_conch, needs(EXTRUSION_POS)),
-    "crystal": (check_crystal, needs(HSV_TUPLE)),
-    "doublependulum": (check_doublependulum, needs(GRAPH_ALL)),
+    "crystal": check_crystal,
+    "doublependulum": check_doublependulum,
     "extruded_columns": (check_extruded_columns, needs(f"{EXTRUSION_POS} and {POLYGONS}")),
-    "faces_cone": (check_faces_cone, needs(HSV_TUPLE)),
+    "faces_cone": check_faces_cone,
     "faces_heightfield": check_faces_heightfield,
-    "gas": (check_gas, needs("mag() of an N x 3 array")),
+    "gas": check_gas,
     "glinfo": (check_glinfo, needs("display.info()")),
-    "graphtest": (check_graphtest, needs(GRAPH_ALL)),
+    "graphtest": check_graphtest,
     "gyro2": check_gyro2,
     "labels": check_labels,
     "lathe": check_lathe,
     "lorenz": check_lorenz,
     "mandelbrot": (check_mandelbrot, needs("gdots(shape='square', size=) and a colour "
-                                           f"per plotted point; {HSV_TUPLE}")),
+                                           "per plotted point")),
     "medusa": (check_medusa, needs(f"{POLYGONS}; extrusion's x=/y=/z= and pos=")),
     "orbit": check_orbit,
     "randombox": check_randombox,
     "stars": check_stars,
-    "text3D": (check_text3D, needs(f"{CURVE_ARRAYS}; 3D text's descent and widths")),
-    "texture_and_lighting": (check_texture_and_lighting, needs(TEXTURE_DATA)),
+    "text3D": (check_text3D, needs("3D text's descent and widths")),
+    "texture_and_lighting": check_texture_and_lighting,
     "tictacdat": check_tictacdat,
-    "toroid": (check_toroid, needs(CURVE_ARRAYS)),
-    "wave": (check_wave, needs(CURVE_ARRAYS)),
+    "toroid": check_toroid,
+    "wave": check_wave,
     "convex": check_convex,
     "crossproduct": check_crossproduct,
     "electric_motor": (check_electric_motor, needs(f"{POLYGONS} and {EXTRUSION_POS}")),
     "gyro": (check_gyro, needs("3D text's own frame (text.frame)")),
     "differential_gear": (check_differential_gear, needs(f"{POLYGONS} and {EXTRUSION_POS}")),
     "material_test": check_material_test,
-    "stonehenge": (check_stonehenge, needs(f"{TEXTURE_DATA}; {HSV_TUPLE}")),
-    "toroid_drag": (check_toroid_drag, needs(f"{CURVE_ARRAYS}; mag() of an N x 3 array")),
-    "planar": (check_planar, needs("curve.pos set to a list of points")),
+    "stonehenge": check_stonehenge,
+    "toroid_drag": check_toroid_drag,
+    "planar": check_planar,
 }
 
 
