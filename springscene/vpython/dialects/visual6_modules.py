@@ -3,8 +3,8 @@ the modules that gave all of ``visual``.
 
 :func:`names` gives, over what ``from visual import *`` already binds:
 
-- ``Polygon``, ``shapes`` whose figures are Polygons, and ``extrusion(pos=path,
-  shape=...)`` (:mod:`.visual6_shapes`);
+- ``Polygon``, ``shapes`` whose figures are Polygons, ``paths`` whose figures have a
+  ``pos``, and ``extrusion(pos=path, shape=...)`` (:mod:`.visual6_shapes`);
 - ``materials`` that also makes a look from numbers, ``materials.texture(data=,
   mapping=, interpolate=, channels=)``, and reads and writes targa files
   (``loadTGA``, ``saveTGA``) (:class:`PictureMaterials`);
@@ -29,7 +29,7 @@ import numpy as np
 from ..api import texture_images
 from ..core import widgets
 from ...errors import UserError
-from .visual6_shapes import Polygon, PolygonShapes, extrusion
+from .visual6_shapes import PathFigures, Polygon, PolygonShapes, extrusion
 
 # -- materials.texture(data=...) -----------------------------------------------------------------
 
@@ -248,7 +248,7 @@ def names(vp: types.ModuleType, given: dict[str, Any]) -> dict[str, Any]:
     if scene is not None:
         scene.info = types.MethodType(display.info, scene)
     return {"Polygon": Polygon, "shapes": PolygonShapes(given.get("shapes", vp.shapes)),
-            "extrusion": extrusion, "materials": PictureMaterials(given["materials"]),
+            "paths": PathFigures(given.get("paths", vp.paths)), "extrusion": extrusion, "materials": PictureMaterials(given["materials"]),
             "display": display, "text": framed_text(given.get("text", vp.text))}
 
 

@@ -10,7 +10,9 @@ VPython 6 (``vis/shapes.py``, ``vis/primitives.py``; docs ``extrusion.html``,
   ``p[i]``, ``isHole(i)``, ``addContour``, ``scale``, ``shift``, ``rotate``,
   ``center``, ``boundingBox``, ``area`` and ``nPoints`` are the package's.
 - ``shapes.*`` (:class:`PolygonShapes`) are VPython 7's figures returned as
-  :class:`Polygon` (a figure with ``thickness`` is an outline and its hole).
+  :class:`Polygon` (a figure with ``thickness`` is an outline and its hole);
+  ``paths.*`` (:class:`PathFigures`) VPython 7's lists of points that also have
+  VPython 6's ``pos`` and ``up``.
 - ``extrusion(pos=path, shape=..., ...)``: the path is ``pos`` (VPython 7 calls it
   ``path``), a list of points, an N x 3 array, ``x=``/``y=``/``z=`` arrays, or a
   :class:`Polygon` (its first contour, counter-clockwise in the xz plane seen from
@@ -260,6 +262,39 @@ class PolygonShapes:
         return figure
 
 
+class PathPoints(list):
+    """A ``paths`` figure as VPython 6 made it, an object whose ``pos`` is its points and
+    ``up`` its plane's normal; it is also the list of points VPython 7 gives."""
+
+    def __init__(self, points: Iterable, up=(0, 1, 0)) -> None:
+        super().__init__(points)
+        self.up = up
+
+    @property
+    def pos(self) -> list:
+        return list(self)
+
+
+class PathFigures:
+    """``paths`` as VPython 6 gave it: each figure (``paths.arc(...)``) a :class:`PathPoints`."""
+
+    def __init__(self, outlines: Any) -> None:
+        self._outlines = outlines
+
+    def __getattr__(self, name: str):
+        if name.startswith("_"):
+            raise AttributeError(name)
+        made = getattr(self._outlines, name)
+        if not callable(made):
+            return made
+
+        def figure(*args: Any, **kwargs: Any) -> PathPoints:
+            return PathPoints(made(*args, **kwargs), kwargs.get("up", (0, 1, 0)))
+        figure.__name__ = name
+        figure.__doc__ = getattr(made, "__doc__", None)
+        return figure
+
+
 # -- extrusion ----------------------------------------------------------------------------------
 
 def _triple(p) -> list[float]:
@@ -456,7 +491,7 @@ class extrusion(_extrusion):
         if name in ("x", "y", "z"):
             v6["pos"][:, "xyz".index(name)] = np.resize(np.asarray(value, dtype=float), n)
         elif name in ("xscale", "yscale"):
-            v6["scale"][:, name != "xscale"] = np.resize(np.asarray(value, dtype=float), n)
+            v6["scale"][:, 0 if name == "xscale" else 1] = np.resize(np.asarray(value, dtype=float), n)
         elif name == "scale":
             xs, ys = _scales({"scale": value}, n)
             v6["scale"] = np.column_stack([xs, ys])
@@ -469,4 +504,5 @@ class extrusion(_extrusion):
         _note_changed(name)
 
 
-__all__ = ["Polygon", "PolygonShapes", "as_polygon", "extrusion"]
+__all__ = ["Polygon", "PolygonShapes", "PathPoints", "PathFigures", "as_polygon",
+           "extrusion"]
