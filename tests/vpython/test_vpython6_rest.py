@@ -11,12 +11,14 @@ import pytest
 
 from conftest import ROOT
 from springscene.vpython.api import texture_images, texturing
+from springscene.vpython.core import widgets
 from springscene.vpython.core.vectors import set_lenient, vector
 from springscene.vpython.dialects import visual6
 from springscene.vpython.dialects.visual6_modules import (PictureMaterials, TextFrame,
                                                           framed_text, picture)
 from springscene.vpython.dialects.visual6_shapes import (PathPoints, Polygon, as_polygon,
                                                          extrusion)
+from springscene.vpython.objects.frames import frame
 from springscene.vpython.run.options import RunOptions
 from springscene.vpython.run.runner import run_program
 
@@ -135,8 +137,6 @@ def test_a_polygon_path_goes_counter_clockwise_in_the_xz_plane_and_closes(vp):
 
 
 def test_a_string_shape_one_point_and_changes_later_kept_and_noted(vp):
-    from springscene.vpython.core import widgets
-
     e = extrusion(pos=[(0, 0, 0), (0, 0, -0.5)], shape="ab")
     assert len(e._mesh.points) > 100
     flat = extrusion(shape=square(2))                          # no path: a flat face
@@ -199,7 +199,7 @@ def test_targa_files_round_trip(tmp_path):
 
 def test_display_info_text_frame_gdots_shape_and_full_modules(vp, v6):
     assert v6["scene"].info().startswith(("OpenGL renderer active.", "Renderer inactive."))
-    assert hasattr(v6["display"], "info")
+    assert v6["display"] is vp.canvas
     t = v6["text"](text="L", height=0.5, pos=vector(1, 2, 3))
     assert isinstance(t.frame, TextFrame) and t.frame.pos.equals(vector(1, 2, 3))
     t.frame.pos = vector(0, 1, 0)
@@ -218,8 +218,6 @@ def test_display_info_text_frame_gdots_shape_and_full_modules(vp, v6):
 
 
 def test_framed_text_keeps_frame_as_a_parent_setter(vp):
-    from springscene.vpython.objects.frames import frame
-
     Text = framed_text(vp.text)
     f = frame(pos=(5, 0, 0))
     t = Text(text="x", frame=f)

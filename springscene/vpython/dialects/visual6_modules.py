@@ -8,7 +8,8 @@ the modules that gave all of ``visual``.
 - ``materials`` that also makes a look from numbers, ``materials.texture(data=,
   mapping=, interpolate=, channels=)``, and reads and writes targa files
   (``loadTGA``, ``saveTGA``) (:class:`PictureMaterials`);
-- ``display`` with ``info()`` (also on ``scene``): VPython 6's report of the renderer;
+- ``scene.info()``: VPython 6's report of the renderer (a ``display`` a program makes
+  itself has none: ``display`` stays VPython 7's ``canvas``);
 - ``text`` whose ``frame`` is the text's own frame (VPython 6 built its 3D text in a
   frame of its own: ``t.frame.pos`` moves the text).
 
@@ -19,9 +20,9 @@ gives (VPython 6's ``controls.py`` and ``text.py`` began ``from visual import *`
 from __future__ import annotations
 
 import inspect
+import sys
 import types
 from pathlib import Path
-import sys
 from typing import Any
 
 import numpy as np
@@ -29,6 +30,7 @@ import numpy as np
 from ..api import texture_images
 from ..core import widgets
 from ...errors import UserError
+from ...view.info import info as render_info
 from .visual6_shapes import PathFigures, Polygon, PolygonShapes, extrusion
 
 # -- materials.texture(data=...) -----------------------------------------------------------------
@@ -170,11 +172,9 @@ class PictureMaterials:
 
 def renderer_info() -> str:
     """VPython 6's ``display.info()``: the OpenGL renderer the pictures are drawn with."""
-    from ...view.info import info  # noqa: PLC0415  heavy: VTK (a window made to ask)
-
     for backend in ("auto", "egl", "osmesa"):
         try:
-            found = info(backend)
+            found = render_info(backend)
         except (UserError, RuntimeError, OSError):
             continue
         return ("OpenGL renderer active.\n"
@@ -184,13 +184,6 @@ def renderer_info() -> str:
                 f"  Extensions: (drawn off-screen by VTK {found['vtk']}, "
                 f"{found['backend']})\n")
     return "Renderer inactive.\n"
-
-
-def _display(canvas: type) -> type:
-    def info(self) -> str:
-        return renderer_info()
-    return type("display", (canvas,), {"info": info, "__doc__": canvas.__doc__,
-                                       "__module__": __name__})
 
 
 # -- the 3D text's own frame ---------------------------------------------------------------------
@@ -243,13 +236,12 @@ def framed_text(base: type) -> type:
 
 def names(vp: types.ModuleType, given: dict[str, Any]) -> dict[str, Any]:
     """The names laid over ``given`` (what ``from visual import *`` binds so far)."""
-    display = _display(vp.canvas)
     scene = given.get("scene", vp.scene)
     if scene is not None:
-        scene.info = types.MethodType(display.info, scene)
+        scene.info = renderer_info
     return {"Polygon": Polygon, "shapes": PolygonShapes(given.get("shapes", vp.shapes)),
             "paths": PathFigures(given.get("paths", vp.paths)), "extrusion": extrusion, "materials": PictureMaterials(given["materials"]),
-            "display": display, "text": framed_text(given.get("text", vp.text))}
+            "text": framed_text(given.get("text", vp.text))}
 
 
 def complete(found: dict[str, types.ModuleType]) -> None:

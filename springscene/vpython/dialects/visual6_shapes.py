@@ -39,6 +39,7 @@ from numbers import Real
 from typing import Any, Iterable
 
 import numpy as np
+import shapely
 
 from ..core import widgets
 from ..core.vectors import vector
@@ -57,11 +58,6 @@ def _contour(points) -> np.ndarray:
     if len(p) > 1 and np.array_equal(p[0], p[-1]):
         p = p[:-1]
     return p
-
-
-def _shapely():
-    import shapely  # noqa: PLC0415  loaded on a program's first Polygon arithmetic only
-    return shapely
 
 
 class Polygon:
@@ -151,8 +147,6 @@ class Polygon:
     # -- arithmetic, by shapely
     def _geometry(self):
         """The region: the union of the solid contours less the union of the holes."""
-        shapely = _shapely()
-
         def region(contours: list):
             parts = [shapely.make_valid(shapely.Polygon(c)) for c in contours if len(c) > 2]
             return shapely.union_all(parts) if parts else shapely.Polygon()
