@@ -11,7 +11,6 @@ import pytest
 
 from conftest import ROOT
 from springscene.vpython.api import texture_images, texturing
-from springscene.vpython.core import widgets
 from springscene.vpython.core.vectors import set_lenient, vector
 from springscene.vpython.dialects import visual6
 from springscene.vpython.dialects.visual6_modules import (PictureMaterials, TextFrame,
@@ -136,17 +135,36 @@ def test_a_polygon_path_goes_counter_clockwise_in_the_xz_plane_and_closes(vp):
     assert area == pytest.approx(4)                            # counter-clockwise
 
 
-def test_a_string_shape_one_point_and_changes_later_kept_and_noted(vp):
+def test_a_string_shape_and_a_path_of_one_point(vp):
     e = extrusion(pos=[(0, 0, 0), (0, 0, -0.5)], shape="ab")
     assert len(e._mesh.points) > 100
     flat = extrusion(shape=square(2))                          # no path: a flat face
     pts = flat._mesh.points * flat._size0
     assert np.ptp(pts[:, 0]) == pytest.approx(2) and np.ptp(pts[:, 2]) < 1e-3
-    e.xscale = 2
-    assert e.xscale.tolist() == [2, 2]
-    assert any("extrusion.xscale" in n for n in widgets.notes())
-    e.color = vp.color.green                                   # one colour: tints it
-    assert e.color.tolist() == [[0, 1, 0]] * 2 and e._color.equals(vector(0, 1, 0))
+
+
+def _world_points(e) -> np.ndarray:
+    return e._mesh.points * np.array(e._size._xyz()) + np.array(e._pos._xyz())
+
+
+def test_setting_an_array_later_makes_the_surface_again_in_place(vp):
+    e = extrusion(pos=[(0, 0, 0), (0, 0, -2)], shape=square(1), color=vp.color.red)
+    before = _world_points(e)
+    assert np.ptp(before[:, 0]) == pytest.approx(1)
+    e.xscale = 3
+    assert e.xscale.tolist() == [3, 3]
+    after = _world_points(e)
+    assert np.ptp(after[:, 0]) == pytest.approx(3) and np.ptp(after[:, 1]) == pytest.approx(1)
+    assert after[:, 0].mean() == pytest.approx(before[:, 0].mean())   # in the same place
+    e.pos[1][2] = -5                  # in place: drawn at the next setting
+    e.color = vp.color.green          # one colour for every point
+    assert e.color.tolist() == [[0, 1, 0]] * 2
+    again = _world_points(e)
+    assert again[:, 2].min() == pytest.approx(-5)
+    assert (e._vertex_rgb() == [0, 255, 0]).all()
+    e.pos = [(0, 0, 0), (1, 0, 0), (2, 0, 0)]                  # a longer path
+    assert e.scale.shape == (3, 2) and e.color.shape == (3, 3)
+    assert np.ptp(_world_points(e)[:, 0]) == pytest.approx(2)
 
 
 # -- textures from numbers -------------------------------------------------------------------
@@ -237,12 +255,14 @@ def _frames(name: str, tmp_path, **options):
 def test_the_extruded_washer_program(tmp_path, capsys):
     result, frames = _frames("vp6_extruded_washer.py", tmp_path, duration=2)
     assert result.ended == "program" and len(frames) >= 10
-    assert "2 True 3.216 (3, 3) [1.2, 1.2] 5" in capsys.readouterr().out
-    last = frames[-1]
+    assert "2 True 3.216 (3, 3) [1.98, 1.98] 5" in capsys.readouterr().out
+    first, last = frames[0], frames[-1]
     cyan = (last[..., 1] > 150) & (last[..., 2] > 150) & (last[..., 0] < 80)
     red = (last[..., 0] > 150) & (last[..., 1] < 80) & (last[..., 2] < 80)
     yellow = (last[..., 0] > 150) & (last[..., 1] > 120) & (last[..., 2] < 80)
     assert cyan.sum() > 2000 and red.sum() > 1000 and yellow.sum() > 500
+    warm = [((f[..., 0] > 150) & (f[..., 2] < 80)).sum() for f in (first, last)]
+    assert warm[1] > 1.3 * warm[0]                    # the column grew as its scale was set
     rows, cols = np.nonzero(red)
     top = last[rows.min():rows.min() + 60, cols.min():cols.max()]   # the top face: a hole
     dark = (top.max(axis=-1) < 90)

@@ -1,7 +1,8 @@
 from visual import *
 # A VPython 6 program extruding Polygon shapes: a square washer (a square less a round
 # hole) swept straight, widening and twisting, coloured point by point; a ring of
-# triangles swept round a Polygon loop; all in a frame that turns.
+# triangles swept round a Polygon loop; all in a frame that turns, the column growing
+# fatter as VPython 6 redrew an extrusion whose scale was set.
 scene.range = 4
 scene.forward = (0, -1, -1)
 scene.background = (0.15, 0.15, 0.2)
@@ -16,6 +17,7 @@ t = 0
 while t < 1:
     rate(50)
     f.rotate(angle=0.03, axis=(0, 1, 0))
+    column.xscale = column.yscale = 1 + t
     t += 0.02
 print(len(washer), washer.isHole(1), round(washer.area(), 3), column.pos.shape,
-      column.scale[1].tolist(), len(ring.pos))
+      column.scale[1].round(2).tolist(), len(ring.pos))

@@ -24,12 +24,13 @@ VPython 6 (``vis/shapes.py``, ``vis/primitives.py``; docs ``extrusion.html``,
   colour or one per point; ``start``/``end`` show part of the path. A path of one
   point draws the shape as a flat face.
 
-What differs: the extrusion is made once, as springscene's extrusions are. Its
-``pos``, ``x``, ``y``, ``z``, ``color``, ``scale``, ``xscale``, ``yscale`` and
-``twist`` read as numpy arrays, one row per path point, as VPython 6's did, but
-changing them (or ``shape``) later is kept and noted, not redrawn; ``color`` set to
-one colour tints it. A shape's open contour is closed (VPython 6 drew an open one as
-a thin wall with no end faces).
+Its ``pos``, ``x``, ``y``, ``z``, ``color``, ``scale``, ``xscale``, ``yscale`` and
+``twist`` read as numpy arrays, one row per path point, as VPython 6's did. Setting
+one of them, ``shape``, ``initial_twist``, ``start`` or ``end`` makes the surface
+again before it is next drawn, in the place and size of the first (so
+``E.yscale = 1.2`` each frame animates it); a change made inside an array in place
+(``E.pos[3][0] = 1``) is drawn at the next such setting. What differs: a shape's open
+contour is closed (VPython 6 drew an open one as a thin wall with no end faces).
 """
 
 from __future__ import annotations
@@ -41,10 +42,9 @@ from typing import Any, Iterable
 import numpy as np
 import shapely
 
-from ..core import widgets
 from ..core.vectors import vector
+from ..objects.extrusions import SWEEP_OPTIONS, extruded, signed_area
 from ..objects.extrusions import extrusion as _extrusion
-from ..objects.extrusions import signed_area
 from ..objects.text3d import nest, text_groups
 
 
@@ -387,48 +387,59 @@ def _colours(value, n: int) -> np.ndarray:
 
 # VPython 6 names springscene's extrusion has no use for
 _IGNORED = ("np", "retain", "twosided", "display", "red", "green", "blue", "material_pos")
-# per-point arrays a program reads (and may write) after the extrusion is made
-_ARRAYS = ("pos", "x", "y", "z", "scale", "xscale", "yscale", "twist", "color")
-
-
-def _note_changed(name: str) -> None:
-    note = (f"extrusion.{name}: changed after the extrusion was made; it is drawn as made "
-            "(VPython 6 redrew it)")
-    if note not in widgets.notes():
-        widgets.skipped(note)
+# what a program reads (and may set) after the extrusion is made; setting one redraws it
+_REDRAWN = ("pos", "x", "y", "z", "scale", "xscale", "yscale", "twist", "color", "shape",
+            "initial_twist", "start", "end")
 
 
 class extrusion(_extrusion):
     """VPython 6's ``extrusion(pos=path, shape=...)``: see the module."""
 
     def __init__(self, **args: Any) -> None:
-        shape = args.pop("shape", None)
-        if shape is None:
+        if args.get("shape") is None:
             raise AttributeError("An extrusion must have a shape.")
         if "path" in args and "pos" not in args:
             args["pos"] = args.pop("path")
         points = _components(_path_points(args.pop("pos", None)), args)
         n = len(points)
         xs, ys = _scales(args, n)
-        twist = _twists(args, n)
-        colours = _colours(args.pop("color", None), n)
-        start, end = args.pop("start", 0), args.pop("end", None)
+        v6 = {"pos": points, "scale": np.column_stack([xs, ys]), "twist": _twists(args, n),
+              "color": _colours(args.pop("color", None), n), "shape": args.pop("shape"),
+              "start": args.pop("start", 0), "end": args.pop("end", None),
+              "sweep": {k: args.pop(k) for k in SWEEP_OPTIONS if k in args}}
         for name in _IGNORED:
             args.pop(name, None)
-        arrays = {"pos": points, "scale": np.column_stack([xs, ys]), "twist": twist,
-                  "color": colours}
-        object.__setattr__(self, "_v6", arrays)
-        shown = slice(start, None if end in (None, -1) else end + 1)
-        path, xs, ys, twist, colours = (a[shown] for a in (points, xs, ys, twist, colours))
+        object.__setattr__(self, "_v6", v6)
+        first = self._sweep_args()
+        super().__init__(**first, **args)
+        self._first = (np.array(self._origin._xyz()), self._size0)
+
+    def _sweep_args(self) -> dict:
+        """springscene's extrusion arguments for the path and arrays as they are now."""
+        v6 = self._v6
+        end = v6["end"]
+        shown = slice(v6["start"], None if end in (None, -1) else end + 1)
+        path, scale, twist, colours = (v6[k][shown] for k in ("pos", "scale", "twist", "color"))
         if len(path) == 1:                      # one point: the shape as a flat face
             path = np.vstack([path, path - (0, 0, 1e-4)])
-            xs, ys, twist, colours = (np.concatenate([a, a]) for a in (xs, ys, twist,
-                                                                       colours))
+            scale, twist, colours = (np.concatenate([a, a]) for a in (scale, twist, colours))
         one = bool(np.all(colours == colours[0]))
-        super().__init__(path=[vector(*p) for p in path], shape=_shape_groups(shape),
-                         xscale=list(xs), yscale=list(ys), twist=list(twist),
-                         color=vector(*colours[0]) if one else
-                         [vector(*c) for c in colours], **args)
+        return {**v6["sweep"], "path": [vector(*p) for p in path],
+                "shape": _shape_groups(v6["shape"]), "xscale": list(scale[:, 0]),
+                "yscale": list(scale[:, 1]), "twist": list(twist),
+                "color": vector(*colours[0]) if one else [vector(*c) for c in colours]}
+
+    # the surface, made again (in the first one's place and size) when it was changed
+    @property
+    def _mesh(self):
+        if self.__dict__.get("_stale"):
+            self.__dict__["_stale"] = False
+            self._take(extruded(self._sweep_args()), *self._first)
+        return self.__dict__["_made_mesh"]
+
+    @_mesh.setter
+    def _mesh(self, mesh) -> None:
+        self.__dict__["_made_mesh"] = mesh
 
     # the per-point arrays, as VPython 6 kept them
     @property
@@ -467,15 +478,17 @@ class extrusion(_extrusion):
     def color(self) -> np.ndarray:
         return self._v6["color"]
 
+    @property
+    def shape(self):
+        return self._v6["shape"]
+
     def __setattr__(self, name: str, value) -> None:
         if "_v6" not in self.__dict__ or name.startswith("_"):
             object.__setattr__(self, name, value)
-        elif name == "color" and (isinstance(value, vector) or len(value) == 3
-                                  and all(_is_number(v) for v in value)):
-            _extrusion.color.__set__(self, value)        # one colour: tints it, as drawn
-            self._v6["color"][:] = _triple(value)
-        elif name in _ARRAYS or name in ("shape", "initial_twist", "start", "end"):
+        elif name in _REDRAWN:
             self._store(name, value)
+            self.__dict__["_stale"] = True
+            self._touch()
         else:
             super().__setattr__(name, value)
 
@@ -485,17 +498,23 @@ class extrusion(_extrusion):
         if name in ("x", "y", "z"):
             v6["pos"][:, "xyz".index(name)] = np.resize(np.asarray(value, dtype=float), n)
         elif name in ("xscale", "yscale"):
-            v6["scale"][:, 0 if name == "xscale" else 1] = np.resize(np.asarray(value, dtype=float), n)
+            v6["scale"][:, 0 if name == "xscale" else 1] = _per_point(value, n)
         elif name == "scale":
-            xs, ys = _scales({"scale": value}, n)
-            v6["scale"] = np.column_stack([xs, ys])
+            v6["scale"] = np.column_stack(_scales({"scale": value}, n))
         elif name == "pos":
-            v6["pos"] = _path_points(value)
+            v6["pos"] = points = _path_points(value)
+            m = len(points)
+            v6["scale"], v6["color"] = np.resize(v6["scale"], (m, 2)), np.resize(v6["color"],
+                                                                                 (m, 3))
+            v6["twist"] = np.resize(v6["twist"], m)
         elif name == "twist":
-            v6["twist"] = _per_point(value, n)
+            v6["twist"] = _twists({"twist": value, "initial_twist": v6["twist"][0]}, n)
+        elif name == "initial_twist":
+            v6["twist"][0] = float(value)
         elif name == "color":
             v6["color"] = _colours(value, n)
-        _note_changed(name)
+        else:                                   # shape, start, end
+            v6[name] = value
 
 
 __all__ = ["Polygon", "PolygonShapes", "PathPoints", "PathFigures", "as_polygon",
