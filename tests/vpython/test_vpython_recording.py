@@ -437,3 +437,20 @@ def test_every_change_to_a_solid_is_recorded_though_positions_are_read_apart(tmp
             recorder.close({})
         np.testing.assert_array_equal(np.array(rows), truth, err_msg=f"{kind}.{name}")
         assert not np.array_equal(rows[2], rows[0]), (kind, name)
+
+
+def test_globals_holding_none_and_deleted_objects_are_not_names(tmp_path):
+    # a program's None (VPython 6's material_test keeps one) is no object's id, nor is a
+    # list holding one, nor an object deleted before the end
+    program = write(tmp_path, """
+        from vpython import *
+        ball = sphere()
+        nothing = None
+        some = [ball, None]
+        gone = box()
+        gone.visible = False
+        gone.delete()
+        rate(10)
+    """)
+    _, run = record(tmp_path, program, fps=10)
+    assert set(run.names) == {"ball"}

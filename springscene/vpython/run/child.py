@@ -166,7 +166,8 @@ def run(reporter: Reporter, request: dict) -> None:
         result = run_program(program, out, options, on_frame=on_frame,
                              on_end=lineage.end_if_copy,
                              on_dialect=lambda d: reporter.send("dialect", name=d.name,
-                                                                dialect_kind=d.kind))
+                                                                dialect_kind=d.kind,
+                                                                notes=list(d.notes)))
     except ProgramExit as exc:
         reporter.end("exit", status=exc.status, said=exc.said, message=str(exc))
     except ProgramRaised as exc:

@@ -175,13 +175,13 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
     path, out, still = request.program, request.out, request.still
     data_only = out.suffix.lower() in DATA_FORMATS      # the recording (or its page) alone
     code, dialect = _compile(path)
-    if on_dialect is not None:
-        on_dialect(dialect)
     vp.reset()
     graph_images.reset()          # the graph figures of an earlier run in this process
     start = time.perf_counter()
     images: list[Path] = []
     names = _namespace(path, dialect)
+    if on_dialect is not None:    # with its notes: how the program was read
+        on_dialect(dialect)
     # the names the program is given, not its own (VPython 6's star import brings numpy's)
     given = {**(visual6.namespace(vp) if dialect.kind == "vpython6" else {}), **names}
     with contextlib.ExitStack() as files:
@@ -207,8 +207,8 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                 raise
             raise ProgramRaised(f"{raised.traceback}\nspringscene: nothing written: "
                                 f"{failure}", raised.error) from None
-    result.notes = ([] if data_only else film.notes) + widgets.notes() + _timing_notes(
-        timeline, options.fps, ended, options.duration) + result.notes
+    result.notes = dialect.notes + ([] if data_only else film.notes) + widgets.notes() + \
+        _timing_notes(timeline, options.fps, ended, options.duration) + result.notes
     if raised is not None:
         result.error, raised.result = raised.error, result
         raise raised
@@ -412,7 +412,11 @@ def _namespace(path: Path, dialect: compiling.Dialect) -> dict:
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
              "input": widgets.program_input}
     if dialect.kind == "glowscript":
-        names.update(glowscript.names(vp), **compiling.HELPERS)
+        names.update(glowscript.names(vp, dialect.version), **compiling.HELPERS)
+    elif dialect.converted:             # a VPython 7 program converted from GlowScript
+        given, note = glowscript.converted_names(vp, dialect.unbound, dialect.converted)
+        names.update(given)
+        dialect.notes.extend([note] if note else [])
     return names
 
 

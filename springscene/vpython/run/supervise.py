@@ -205,7 +205,8 @@ def _read(fd: int, state: dict, watch: Watch, on_dialect) -> int | None:
             watch.dialect = message["name"]
             if on_dialect is not None:
                 on_dialect(types.SimpleNamespace(name=message["name"],
-                                                 kind=message["dialect_kind"]))
+                                                 kind=message["dialect_kind"],
+                                                 notes=message.get("notes", [])))
         elif state["report"] is None:
             state["report"] = message
             if message.get("progress", {}).get("started"):
