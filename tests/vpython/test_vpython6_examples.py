@@ -405,24 +405,21 @@ def needs(feature: str):
 
 
 CURVE_ARRAYS = "a curve's points as numpy arrays (pos, x, y, z)"
-EXTRUSION_POS = "extrusion's path given as pos= (VPython 6)"
-POLYGONS = "VPython 6's shapes as Polygons (-, +, contour)"
 HSV_TUPLE = "color.hsv_to_rgb of a tuple"
 GRAPH_ALL = "from visual.graph import * giving all of visual"
-TEXTURE_DATA = "materials.texture(data=...) from an array"
 
 EXAMPLES = {
     "bounce": check_bounce,
     "bounce2": check_bounce2,
     "boxlighttest": check_boxlighttest,
-    "conch": (check_conch, needs(EXTRUSION_POS)),
+    "conch": check_conch,
     "crystal": (check_crystal, needs(HSV_TUPLE)),
     "doublependulum": (check_doublependulum, needs(GRAPH_ALL)),
-    "extruded_columns": (check_extruded_columns, needs(f"{EXTRUSION_POS} and {POLYGONS}")),
+    "extruded_columns": check_extruded_columns,
     "faces_cone": (check_faces_cone, needs(HSV_TUPLE)),
     "faces_heightfield": check_faces_heightfield,
     "gas": (check_gas, needs("mag() of an N x 3 array")),
-    "glinfo": (check_glinfo, needs("display.info()")),
+    "glinfo": check_glinfo,
     "graphtest": (check_graphtest, needs(GRAPH_ALL)),
     "gyro2": check_gyro2,
     "labels": check_labels,
@@ -430,22 +427,22 @@ EXAMPLES = {
     "lorenz": check_lorenz,
     "mandelbrot": (check_mandelbrot, needs("gdots(shape='square', size=) and a colour "
                                            f"per plotted point; {HSV_TUPLE}")),
-    "medusa": (check_medusa, needs(f"{POLYGONS}; extrusion's x=/y=/z= and pos=")),
+    "medusa": check_medusa,
     "orbit": check_orbit,
     "randombox": check_randombox,
     "stars": check_stars,
     "text3D": (check_text3D, needs(f"{CURVE_ARRAYS}; 3D text's descent and widths")),
-    "texture_and_lighting": (check_texture_and_lighting, needs(TEXTURE_DATA)),
+    "texture_and_lighting": check_texture_and_lighting,
     "tictacdat": check_tictacdat,
     "toroid": (check_toroid, needs(CURVE_ARRAYS)),
     "wave": (check_wave, needs(CURVE_ARRAYS)),
     "convex": check_convex,
     "crossproduct": check_crossproduct,
-    "electric_motor": (check_electric_motor, needs(f"{POLYGONS} and {EXTRUSION_POS}")),
+    "electric_motor": check_electric_motor,
     "gyro": (check_gyro, needs("3D text's own frame (text.frame)")),
-    "differential_gear": (check_differential_gear, needs(f"{POLYGONS} and {EXTRUSION_POS}")),
+    "differential_gear": check_differential_gear,
     "material_test": check_material_test,
-    "stonehenge": (check_stonehenge, needs(f"{TEXTURE_DATA}; {HSV_TUPLE}")),
+    "stonehenge": (check_stonehenge, needs(HSV_TUPLE)),
     "toroid_drag": (check_toroid_drag, needs(f"{CURVE_ARRAYS}; mag() of an N x 3 array")),
     "planar": (check_planar, needs("curve.pos set to a list of points")),
 }
