@@ -35,6 +35,7 @@ from typing import Any
 
 import numpy as np
 
+from . import visual6_modules
 from ..core import vectors as _vector_module
 from ..core.vectors import as_vector, vector
 from ..objects.frames import frame
@@ -249,6 +250,7 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
                                                 _numpy_or_builtin(np.all, all))
     names.update(faces=faces, convex=convex)        # VPython 6's array surfaces
     names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
+    names.update(visual6_modules.names(vp, names))
     return names
 
 
@@ -328,6 +330,7 @@ def modules(vp: types.ModuleType) -> dict[str, types.ModuleType]:
     vis = _module("vis", {k: v for k, v in namespace(vp).items()
                           if k in vp.__all__ or k in ("display", "frame", "materials")})
     found["vis"] = vis
+    visual6_modules.complete(found)
     return found
 
 
