@@ -76,12 +76,16 @@ class _Buffers:
         return {"f32": _packed(self.floats, "<f4"), "i32": _packed(self.ints, "<i4")}
 
 
+ZLIB_LEVEL = 6     # zlib's default: level 9 took 10 s, not 0.9 s, on a run's 7 MB of
+                   # trail points and made them 0.6 % smaller
+
+
 def _packed(chunks: list, dtype: str) -> str:
     """Arrays of 4-byte numbers as base64 of the zlib stream of their bytes shuffled: the
     first bytes of every number, then the second bytes, … (alike bytes side by side)."""
     a = np.concatenate(chunks).astype(dtype) if chunks else np.zeros(0, dtype)
     shuffled = a.view(np.uint8).reshape(-1, 4).T.tobytes()
-    return base64.b64encode(zlib.compress(shuffled, 9)).decode("ascii")
+    return base64.b64encode(zlib.compress(shuffled, ZLIB_LEVEL)).decode("ascii")
 
 
 @dataclass
