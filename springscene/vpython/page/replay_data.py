@@ -93,19 +93,23 @@ class _Segments:
     """A list of points (curve, points, a graph's series) over time, as segments."""
 
     width: int
-    segments: list[list[float]] = field(default_factory=list)
+    segments: list[list[np.ndarray]] = field(default_factory=list)   # (n, width) blocks
+    sizes: list[int] = field(default_factory=list)                   # points a segment
     states: list[tuple[int, int, int, int]] = field(default_factory=list)  # frame, seg, a, b
 
     def change(self, frame: int, reset=None, drop: int = 0, append=()) -> None:
         seg, start, end = (self.states[-1][1:] if self.states else (-1, 0, 0))
         if reset is not None or seg < 0:
             self.segments.append([])
+            self.sizes.append(0)
             seg, start, end = len(self.segments) - 1, 0, 0
             append = list(reset or ()) + list(append)
         start = min(start + max(int(drop), 0), end)
-        for p in append:
-            self.segments[seg].extend(_row(p, self.width))
-        end = len(self.segments[seg]) // self.width
+        rows = _rows(append, self.width)
+        if len(rows):
+            self.segments[seg].append(rows)
+            self.sizes[seg] += len(rows)
+        end = self.sizes[seg]
         state = (frame, seg, start, end)
         if self.states and self.states[-1][0] == frame:
             self.states[-1] = state
@@ -113,9 +117,32 @@ class _Segments:
             self.states.append(state)
 
     def encoded(self, buf: _Buffers) -> list[Any]:
-        offsets = [buf.add_floats(s) for s in self.segments]
+        offsets = [buf.add_floats(np.concatenate(s).ravel() if s else ()) for s in self.segments]
         flat = [v for s in self.states for v in s]
         return [offsets, buf.add_ints(flat), len(self.states)]
+
+
+def _rows(points, width: int) -> np.ndarray:
+    """The points as :func:`_row` gives them, (n, width): at once for the usual all-number
+    points of one length (a trail's ``[x, y, z]``), else point by point."""
+    points = list(points)
+    if not points:
+        return np.zeros((0, width))
+    a = None
+    if all(type(p) is list and len(p) == len(points[0]) for p in points) \
+            and not any(v is True or v is False for p in points for v in p):   # not numbers
+        try:
+            a = np.array(points)
+        except (TypeError, ValueError):
+            a = None
+    if a is None or a.ndim != 2 or a.dtype.kind not in "if" or not 2 <= a.shape[1] <= width \
+            or (width == _POINT_WIDTH and a.shape[1] != 3):
+        return np.array([_row(p, width) for p in points], dtype=float).reshape(-1, width)
+    rows = np.zeros((len(a), width))
+    rows[:, :a.shape[1]] = a
+    if width == _POINT_WIDTH:
+        rows[:, 3:6] = -1.0                   # no colour of its own
+    return rows
 
 
 def _row(p, width: int) -> list[float]:
