@@ -203,6 +203,14 @@ def test_a_constant_that_wobbles_in_its_last_digits_is_drawn_as_a_constant():
     assert count_color(img, (255, 0, 0)) > 200
 
 
+def test_a_graph_of_a_fractional_size_is_drawn_at_whole_pixels():
+    # 0.45 * 562.5 px high (the corpus's hardSphereGasItv): 253 rows, not a broadcast error
+    G.reset()
+    g = G.graph(width=450, height=0.45 * 562.5)
+    G.gcurve(color=V(1, 0, 0), data=[[0, 0], [1, 1]])
+    assert GI.draw(g).shape == (253, 450, 3)
+
+
 def test_draw_bars_dots_and_hidden_series():
     g = G.graph(xmin=0, xmax=10, ymin=0, ymax=10)
     bars = G.gvbars(color=V(0, 0.6, 0), delta=0.8, data=[[i, i] for i in range(1, 9)])
