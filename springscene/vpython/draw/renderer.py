@@ -35,11 +35,13 @@ from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template
 from .batches import Batch, TextureCache, TexturedBatch
 from .impostors import SphereBatch
 from .instanced import InstancedBatch
-from . import impostors
+from .capsules import CapsuleBatch
+from . import capsules, impostors
 
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
 IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
+CAPSULES = True       # lit curves drawn as ray-cast capsules (:mod:`.capsules`)
 
 
 _Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
@@ -167,12 +169,23 @@ class Renderer:
     def _new_batch(self, key: tuple) -> _Batch:
         spec = key[-1] if key[0] in ("textured", "triangle") else None
         if spec is None:
+            if key[0] in ("tube", "lines", "points", "sphere-points") and not key[2]:
+                return self._new_point_batch(key)
             if not self._instanced(key):
                 return _Batch(self.window, key)
             spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.window.ren_win)
             return (SphereBatch if spheres else InstancedBatch)(self.window, key)
         texture = self._textures.get(spec.source, texturing.load(spec))
         return TexturedBatch(self.window, key, texture)
+
+    def _new_point_batch(self, key: tuple) -> _Batch:
+        """Lit curves as ray-cast capsules, lit points as spheres (the small ones
+        impostors), where the GL has what their shaders need; else meshes."""
+        if key[0] in ("tube", "lines"):
+            ray_cast = CAPSULES and impostors.available(self.window.ren_win)
+            return (CapsuleBatch if ray_cast else _Batch)(self.window, key)
+        ray_cast = IMPOSTORS and impostors.available(self.window.ren_win)
+        return (SphereBatch if ray_cast else _Batch)(self.window, key)
 
     @staticmethod
     def _instanced(key: tuple) -> bool:
@@ -308,12 +321,51 @@ class Renderer:
 
     def _draw_points(self, batch, key, objs, style) -> None:
         """Points as spheres and curves as tubes (:mod:`..geometry.point_meshes`); pixel-sized points and
-        thin curves sized by the range, curves thinned on screen for this view."""
+        thin curves sized by the range, curves thinned on screen for this view. Curves of
+        a :class:`.CapsuleBatch` go as segments, points of a :class:`.SphereBatch` as
+        centres and sizes (the small ones impostors), neither made into meshes."""
         if key[0] in SCREEN_THINNED:
             batch.view_key = self._view_key()
         rng, w = self.cv._range_now(), self.width
+        if isinstance(batch, CapsuleBatch):
+            parts = [point_meshes.polyline(key[0], o, self.view, rng, w) for o in objs]
+            segs = [capsules.segments_of(*p) for p in parts if p is not None]
+            if not segs:
+                batch.hide()
+                return
+            batch.set_segments(*(np.concatenate(c) for c in zip(*segs)), style)
+            return
+        if isinstance(batch, SphereBatch):
+            self._draw_point_spheres(batch, key, objs, style, rng, w)
+            return
         parts = [point_meshes.mesh(key[0], o, self.view, rng, w) for o in objs]
         self._draw_meshes(batch, key, [m for m in parts if m is not None], style)
+
+    def _draw_point_spheres(self, batch, key, objs, style, rng, w) -> None:
+        """Points as instances of their 8-slice sphere, those small on screen impostors
+        (their world size for this range recomputed, nothing rebuilt)."""
+        arrays = [point_meshes.balls(key[0], o, rng, w) for o in objs]
+        arrays = [a for a in arrays if a is not None]
+        if not arrays:
+            batch.hide()
+            return
+        pos, diam, rgb = (np.concatenate(c) for c in zip(*arrays))
+        size = np.repeat(diam[:, None], 3, axis=1)
+        small = np.zeros(len(pos), dtype=bool)
+        if self.view is not None:
+            small = impostors.small(self._radius_px(pos, diam / 2), self.lod.sphere_steps,
+                                    self.lod.sphere_px)
+        R = np.broadcast_to(np.eye(3), (int((~small).sum()), 3, 3))
+        batch.set_spheres(point_meshes.point_sphere(), ("points", point_meshes.POINT_SLICES),
+                          pos, R, size, rgb, style, small, point_meshes.POINT_EQUAL_AREA)
+
+    def _radius_px(self, pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
+        """Radii in pixels on screen of spheres at ``pos``, for this view."""
+        v = self.view
+        fwd = v.focal_point - v.position
+        fwd = fwd / np.linalg.norm(fwd)
+        depth = np.maximum((pos - v.position) @ fwd, v.near)
+        return radius / depth * ((v.height / 2) / math.tan(v.fov / 2))
 
     def _view_key(self):
         v = self.view
