@@ -92,6 +92,7 @@ flat in vec3 capStartRGB;
 flat in vec3 capEndRGB;
 flat in vec4 capDepthZ;
 flat in vec4 capDepthW;
+layout(depth_greater) out float gl_FragDepth;
 
 void capRay(vec3 onBox, out vec3 origin, out vec3 dir) {
   if (cameraParallel != 0) {
@@ -144,6 +145,7 @@ vec2 capHit(vec3 origin, vec3 dir) {
   }
   return vec2(best < 1e30 ? best : -1.0, along);
 }
+
 """)
 
 # after ``vec4 vertexVC = vertexVCVSOutput;``: cast the rays (each sample's, anti-aliased),
@@ -152,14 +154,17 @@ _FS_DEPTH = ("//VTK::Depth::Impl", """
   vec3 capOrigin, capDir;
   capRay(vertexVCVSOutput.xyz, capOrigin, capDir);
   vec2 capAt = capHit(capOrigin, capDir);
-  int coverage = 0;
-  for (int i = 0; i < gl_NumSamples; ++i) {
-    vec3 sOrigin, sDir;
-    capRay(interpolateAtSample(vertexVCVSOutput, i).xyz, sOrigin, sDir);
-    vec2 sAt = capHit(sOrigin, sDir);
-    if (sAt.x >= 0.0) {
-      coverage |= (1 << i);
-      if (capAt.x < 0.0) { capAt = sAt; capOrigin = sOrigin; capDir = sDir; }
+  int coverage = capAt.x >= 0.0 ? -1 : 0;
+  if (gl_NumSamples > 1) {
+    coverage = 0;
+    for (int i = 0; i < gl_NumSamples; ++i) {
+      vec3 sOrigin, sDir;
+      capRay(interpolateAtSample(vertexVCVSOutput, i).xyz, sOrigin, sDir);
+      vec2 sAt = capHit(sOrigin, sDir);
+      if (sAt.x >= 0.0) {
+        coverage |= (1 << i);
+        if (capAt.x < 0.0) { capAt = sAt; capOrigin = sOrigin; capDir = sDir; }
+      }
     }
   }
   if (coverage == 0) { discard; }
@@ -231,11 +236,17 @@ class CapsuleBatch(Batch):
 
     segments = 0
 
-    def set_segments(self, a, b, ra, rb, rgb_a, rgb_b, style: dict) -> None:
+    def set_segments(self, a, b, ra, rb, rgb_a, rgb_b, style: dict, view=None) -> None:
         """The segments now: from ``a`` to ``b`` (S, 3), radii ``ra``, ``rb`` (S,), colours
         ``rgb_a``, ``rgb_b`` (S, 3) uint8 at each end (drawn at :data:`MEAN_WIDTH` times
-        the radii)."""
+        the radii), nearest ``view``'s camera first (the depth test then spares the
+        hidden ones their rays)."""
         a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+        if view is not None and len(a) > 1:
+            forward = np.asarray(view.focal_point) - np.asarray(view.position)
+            order = np.argsort((a + b) @ forward, kind="stable")
+            a, b, ra, rb, rgb_a, rgb_b = (np.asarray(x)[order]
+                                          for x in (a, b, ra, rb, rgb_a, rgb_b))
         ra = np.asarray(ra, dtype=float) * MEAN_WIDTH
         rb = np.asarray(rb, dtype=float) * MEAN_WIDTH
         if not len(a):
@@ -284,7 +295,7 @@ class CapsuleBatch(Batch):
         for name in ATTRIBUTES:
             m.MapDataArrayToVertexAttribute(name, name, 0, -1)
         self._adopt(m, style)
-        self.actor.GetProperty().FrontfaceCullingOn()
+        self.actor.GetProperty().BackfaceCullingOn()
 
     def _shade(self) -> None:
         shade_as_glowscript(self.actor, False)
@@ -292,7 +303,9 @@ class CapsuleBatch(Batch):
         shader.ClearAllVertexShaderReplacements()
         for original, replacement in VS_RULES:
             shader.AddVertexShaderReplacement(original, False, replacement, False)
-        shader.AddFragmentShaderReplacement(*_DECLARE[:1], True, _DECLARE[1], False)
+        shader.AddFragmentShaderReplacement(
+            *_DECLARE[:1], True, _DECLARE[1] + "#extension GL_ARB_conservative_depth : require\n",
+            False)
         for original, replacement in FS_RULES:
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
 

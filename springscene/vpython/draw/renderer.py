@@ -333,7 +333,7 @@ class Renderer:
             if not segs:
                 batch.hide()
                 return
-            batch.set_segments(*(np.concatenate(c) for c in zip(*segs)), style)
+            batch.set_segments(*(np.concatenate(c) for c in zip(*segs)), style, self.view)
             return
         if isinstance(batch, SphereBatch):
             self._draw_point_spheres(batch, key, objs, style, rng, w)
@@ -358,6 +358,7 @@ class Renderer:
         R = np.broadcast_to(np.eye(3), (int((~small).sum()), 3, 3))
         batch.set_spheres(point_meshes.point_sphere(), ("points", point_meshes.POINT_SLICES),
                           pos, R, size, rgb, style, small, point_meshes.POINT_EQUAL_AREA)
+        culling.cull_back_faces(batch, style, self.view, pos, diam / 2)
 
     def _radius_px(self, pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
         """Radii in pixels on screen of spheres at ``pos``, for this view."""
