@@ -42,6 +42,7 @@ SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
 IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
 CAPSULES = True       # lit curves drawn as ray-cast capsules (:mod:`.capsules`)
+POINT_IMPOSTORS = True  # small lit points drawn as sphere impostors (:mod:`.impostors`)
 
 
 _Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
@@ -352,7 +353,7 @@ class Renderer:
         pos, diam, rgb = (np.concatenate(c) for c in zip(*arrays))
         size = np.repeat(diam[:, None], 3, axis=1)
         small = np.zeros(len(pos), dtype=bool)
-        if self.view is not None:
+        if self.view is not None and POINT_IMPOSTORS:
             small = impostors.small(self._radius_px(pos, diam / 2), self.lod.sphere_steps,
                                     self.lod.sphere_px)
         R = np.broadcast_to(np.eye(3), (int((~small).sum()), 3, 3))
