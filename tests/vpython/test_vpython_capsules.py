@@ -131,9 +131,16 @@ def test_a_turning_curve_updates_its_segments_in_place():
     actor, mesh, cells = batch.actor, batch.mesh, batch.mesh.GetPolys()
     c.rotate(angle=0.3, axis=vp.vector(0, 1, 0))
     second = r.frame()
-    assert isinstance(batch, CapsuleBatch) and batch.segments == 299
+    assert isinstance(batch, CapsuleBatch) and batch.segments == 299 + 299 // 8
     assert batch.actor is actor and batch.mesh is mesh and batch.mesh.GetPolys() is cells
     assert (np.abs(first.astype(int) - second.astype(int)).max(axis=2) > 24).mean() > 0.01
+    for _ in range(20):                      # fewer segments: the same room, 20 drawn less
+        c.pop()
+    third = r.frame()
+    assert batch.mesh.GetPolys() is cells and batch.segments == 299 + 299 // 8
+    assert not np.array_equal(third, second)
+    c.clear()
+    assert not r.frame().any(axis=2).any()   # no segments: nothing drawn
     r.close()
 
 

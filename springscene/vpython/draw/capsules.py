@@ -232,9 +232,13 @@ def boxes(a: np.ndarray, b: np.ndarray, ra: np.ndarray, rb: np.ndarray) -> np.nd
 
 
 class CapsuleBatch(Batch):
-    """Curves of one look drawn as ray-cast capsules, one box a segment."""
+    """Curves of one look drawn as ray-cast capsules, one box a segment.
 
-    segments = 0
+    Room is kept for 1/8 more segments than drawn: a curve whose count changes a little
+    (a turning curve thinned for each view, a growing trail) keeps its mesh and cells,
+    its spare boxes shrunk to a point; half as many or more than the room, a new mesh."""
+
+    segments = 0          # the boxes the mesh has room for
 
     def set_segments(self, a, b, ra, rb, rgb_a, rgb_b, style: dict, view=None) -> None:
         """The segments now: from ``a`` to ``b`` (S, 3), radii ``ra``, ``rb`` (S,), colours
@@ -253,12 +257,17 @@ class CapsuleBatch(Batch):
             self.hide()
             return
         self.empty = False
-        corners = boxes(a, b, ra, rb)
-        attrs = {"capStart": np.repeat(np.column_stack([a, ra]).astype(np.float32), 8, axis=0),
-                 "capEnd": np.repeat(np.column_stack([b, rb]).astype(np.float32), 8, axis=0),
-                 "capStartColor": np.repeat(np.asarray(rgb_a, np.float32) / 255, 8, axis=0),
-                 "capEndColor": np.repeat(np.asarray(rgb_b, np.float32) / 255, 8, axis=0)}
-        if self.actor is not None and len(a) == self.segments:
+        n = len(a)
+        room = self.segments if self.segments // 2 <= n <= self.segments else n + n // 8
+        corners = np.zeros((room * 8, 3))       # the boxes past ``n``: points, drawing nothing
+        corners[:n * 8] = boxes(a, b, ra, rb)
+        attrs = {"capStart": np.column_stack([a, ra]), "capEnd": np.column_stack([b, rb]),
+                 "capStartColor": np.asarray(rgb_a) / 255, "capEndColor": np.asarray(rgb_b) / 255}
+        for name, values in attrs.items():
+            padded = np.zeros((room * 8, values.shape[1]), dtype=np.float32)
+            padded[:n * 8] = np.repeat(values, 8, axis=0)
+            attrs[name] = padded
+        if self.actor is not None and room == self.segments:
             self.mesh.points[:] = corners
             self.mesh.GetPoints().Modified()
             for name, values in attrs.items():
@@ -270,7 +279,7 @@ class CapsuleBatch(Batch):
             return
         from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
 
-        mesh = PolyData(corners, faces=_cells(len(a)))
+        mesh = PolyData(corners, faces=_cells(room))
         for name, values in attrs.items():
             mesh.point_data[name] = values
         mesh.point_data["rgb"] = np.zeros((len(corners), 3), dtype=np.uint8)
@@ -278,8 +287,8 @@ class CapsuleBatch(Batch):
         normals[:, 2] = 1.0                       # normal replaces these per pixel
         mesh.point_data["Normals"] = normals
         mesh.GetPointData().SetActiveNormals("Normals")
-        self.segments = len(a)
-        self.signature = ("capsules", len(a))
+        self.segments = room
+        self.signature = ("capsules", room)
         if self.actor is None:
             self.mesh = mesh
             self._new_actor(style)
