@@ -161,14 +161,21 @@ def test_emissive_curves_and_missing_extensions_keep_meshes(monkeypatch):
     r.close()
 
 
-def test_small_points_are_impostors_sized_by_the_range():
-    """Pixel-sized points under ~5 px in radius go to the sphere impostors, bigger ones
-    to instances of their 8-slice sphere; the impostors' world radius follows the
-    range (VPython's ``2 range / width`` a pixel) with nothing rebuilt."""
+def test_points_are_instances_and_small_ones_can_be_impostors(monkeypatch):
+    """By default every point is an instance of its 8-slice sphere; with
+    ``POINT_IMPOSTORS`` those under ~5 px in radius go to the sphere impostors, the
+    others stay instances, and the impostors' world radius follows the range
+    (VPython's ``2 range / width`` a pixel) with nothing rebuilt."""
     vp.scene.width, vp.scene.height = 300, 200
     vp.scene.range = 10
     vp.points(pos=[vp.vector(-3, 0, 0), vp.vector(0, 0, 0)], radius=3)
     vp.points(pos=[vp.vector(3, 0, 0)], radius=9)
+    r = Renderer(vp.scene, antialias=False)
+    r.frame()
+    (batch,) = r._batches.values()
+    assert isinstance(batch, SphereBatch) and batch.instances == 3 and batch.impostors.empty
+    r.close()
+    monkeypatch.setattr(renderer, "POINT_IMPOSTORS", True)
     r = Renderer(vp.scene, antialias=False)
     image, view = r.frame(), r.view
     (batch,) = r._batches.values()
