@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import springscene.vpython.api as vp
-from springscene.vpython.draw import impostors, renderer
+from springscene.vpython.draw import capsules, renderer
 from springscene.vpython.draw.capsules import CapsuleBatch
 from springscene.vpython.draw.impostors import SphereBatch
 from springscene.vpython.draw.renderer import Renderer
@@ -56,8 +56,8 @@ def _curve_scene(name: str) -> None:
                      radius=0.02 + 0.12 * rng.random(), color=vp.vector(*(0.5 + 0.5 * rng.random(3))))
 
 
-def _picture(antialias: bool, capsules: bool, monkeypatch):
-    monkeypatch.setattr(renderer, "CAPSULES", capsules)
+def _picture(antialias: bool, ray_cast: bool, monkeypatch):
+    monkeypatch.setattr(renderer, "CAPSULES", ray_cast)
     r = Renderer(vp.scene, antialias=antialias)
     r.frame()
     image = r.frame()
@@ -153,7 +153,7 @@ def test_emissive_curves_and_missing_extensions_keep_meshes(monkeypatch):
     kinds = {k[2]: type(b) for k, b in r._batches.items()}
     r.close()
     assert kinds == {True: renderer._Batch, False: CapsuleBatch}
-    monkeypatch.setattr(impostors, "_available", [False])
+    monkeypatch.setattr(capsules, "_available", [False])
     r = Renderer(vp.scene, antialias=False)
     image = r.frame()
     assert {type(b) for b in r._batches.values()} == {renderer._Batch}
@@ -199,14 +199,14 @@ def test_capsules_behind_a_transparent_sphere(monkeypatch):
     capsules are drawn in its opaque pass and seen through the sphere as the meshes are
     (measured 0.025 % of pixels off)."""
     pictures = []
-    for capsules in (True, False):
+    for ray_cast in (True, False):
         vp.reset()
         vp.scene.width, vp.scene.height = 300, 200
         vp.curve(pos=[vp.vector(-3, -1, 0), vp.vector(0, 1, 0), vp.vector(3, -1, 0)],
                  radius=0.3, color=vp.color.yellow)
         vp.sphere(pos=vp.vector(0, 0, 1), radius=1.2, opacity=0.4, color=vp.color.cyan)
-        image, kinds = _picture(True, capsules, monkeypatch)
-        assert (kinds["tube"] is CapsuleBatch) == capsules
+        image, kinds = _picture(True, ray_cast, monkeypatch)
+        assert (kinds["tube"] is CapsuleBatch) == ray_cast
         pictures.append(image)
     bad, _ = compare(*pictures)
     assert bad <= MAX_BAD_FRACTION, bad

@@ -10,8 +10,11 @@ second's along the segment and the hemisphere the second's (curve_render_vertex.
 (:func:`..geometry.meshes.tube`) that is about 130 vertices a segment: a curve of
 15,000 segments is about a million triangles rebuilt and set up every frame it moves.
 
-Here a segment is a box around that capsule (8 corners, its front faces culled so that
-each pixel runs once), and the fragment shader casts the pixel's ray at the true shape:
+Here a segment is a box around that capsule (8 corners; its back faces culled, so each
+pixel runs once, on a near face no farther than the capsule: the shader says so,
+``depth_greater``, ARB_conservative_depth, and the segments are drawn nearest first, so
+the depth test turns hidden pixels away before their rays are cast), and the fragment
+shader casts the pixel's ray at the true shape:
 the cone between the two points (its near or, looking into the open first end, its
 far side) and the hemisphere on the second point; it discards a miss and writes the
 hit's depth (so it meets meshes and other capsules as a mesh would), the normal the
@@ -24,8 +27,9 @@ as MSAA shades a mesh (as :mod:`.impostors` does for spheres).
 The segment's points, radii and colours reach the shader as vertex attributes of the
 box's corners (``MapDataArrayToVertexAttribute``), repeated on its 8 corners; a curve
 that turns rewrites these arrays in place and nothing else. Needs the extensions of
-:data:`.impostors.EXTENSIONS` (:func:`.impostors.available`); opaque, lit curves only
-(curves have no opacity here; an emissive curve keeps its mesh).
+:data:`.impostors.EXTENSIONS` and ARB_conservative_depth (:func:`available`); opaque,
+lit curves only (curves have no opacity here; an emissive curve keeps its mesh). A
+camera inside a segment's box sees none of that segment (its near faces are behind it).
 """
 
 from __future__ import annotations
@@ -37,6 +41,7 @@ import math
 import numpy as np
 
 from .batches import Batch
+from . import impostors
 from .impostors import _DECLARE
 from .materials import shade_as_glowscript
 from ..geometry.meshes import CURVE_SIDES
@@ -47,7 +52,8 @@ from ..geometry.meshes import CURVE_SIDES
 MEAN_WIDTH = CURVE_SIDES / math.pi * math.sin(math.pi / CURVE_SIDES)
 
 # a segment's box: corners (along, side, up) in {0, 1}^3 and its 12 triangles wound
-# outwards, so that culling the front faces leaves the 3 or so far faces a pixel each
+# outwards (counter-clockwise seen from outside), so that culling the back faces leaves
+# the 3 or so near faces, a pixel each
 _CORNERS = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=float)
 _BOX_TRIANGLES = np.array([
     [0, 1, 3], [0, 3, 2],      # along = 0
@@ -196,6 +202,18 @@ FS_RULES = (_FS_DECLARE, _FS_DEPTH, _FS_SURFACE)
 VS_RULES = (_VS_DECLARE, _VS_IMPL)
 
 ATTRIBUTES = ("capStart", "capEnd", "capStartColor", "capEndColor")
+EXTENSION = "GL_ARB_conservative_depth"
+
+_available: list[bool] = []    # one answer a process, as impostors.available
+
+
+def available(render_window) -> bool:
+    """The window's OpenGL has what the capsules' shader needs: the impostors' extensions
+    (:func:`.impostors.available`) and :data:`EXTENSION`."""
+    if not _available:
+        _available.append(impostors.available(render_window)
+                          and EXTENSION in render_window.ReportCapabilities())
+    return _available[0]
 
 
 @functools.cache
@@ -313,8 +331,7 @@ class CapsuleBatch(Batch):
         for original, replacement in VS_RULES:
             shader.AddVertexShaderReplacement(original, False, replacement, False)
         shader.AddFragmentShaderReplacement(
-            *_DECLARE[:1], True, _DECLARE[1] + "#extension GL_ARB_conservative_depth : require\n",
-            False)
+            *_DECLARE[:1], True, _DECLARE[1] + f"#extension {EXTENSION} : require\n", False)
         for original, replacement in FS_RULES:
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
 
@@ -324,4 +341,5 @@ def segments_of(pos: np.ndarray, rgb: np.ndarray, radii: np.ndarray):
     return pos[:-1], pos[1:], radii[:-1], radii[1:], rgb[:-1], rgb[1:]
 
 
-__all__ = ["CapsuleBatch", "boxes", "segments_of", "FS_RULES", "VS_RULES"]
+__all__ = ["CapsuleBatch", "available", "boxes", "segments_of", "FS_RULES", "VS_RULES",
+           "MEAN_WIDTH", "EXTENSION"]

@@ -183,7 +183,7 @@ class Renderer:
         """Lit curves as ray-cast capsules, lit points as spheres (the small ones
         impostors), where the GL has what their shaders need; else meshes."""
         if key[0] in ("tube", "lines"):
-            ray_cast = CAPSULES and impostors.available(self.window.ren_win)
+            ray_cast = CAPSULES and capsules.available(self.window.ren_win)
             return (CapsuleBatch if ray_cast else _Batch)(self.window, key)
         ray_cast = IMPOSTORS and impostors.available(self.window.ren_win)
         return (SphereBatch if ray_cast else _Batch)(self.window, key)
