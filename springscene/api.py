@@ -46,6 +46,7 @@ from .settings import Config
 from .view.overlay import parse_overlays
 from .vpython.record.reader import read as read_recording
 from .vpython.run.options import check_record
+from .vpython.run.runner import ProgramRaised
 
 __all__ = ["load_config", "starters", "init", "simulate", "still", "render", "analyze", "sweep",
            "figures", "run_vpython", "Table", "Still", "Video", "Analysis", "Run", "Config",
@@ -452,20 +453,16 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     Parameters
     ----------
     program : str or Path
-        A VPython 7, VPython 6 or Web VPython program (``springscene.init("bounce")``
-        copies an example).
+        A VPython 7, VPython 6 or Web VPython program.
     out : str or Path, optional
         None: nothing drawn, the run as a :class:`Run`. ``.mp4``, ``.gif``, ... or
         ``.png``: a video or still of the page, a :class:`Video`. ``.jsonl``: the
         recording alone, kept there, as a :class:`Run`.
     duration, frames, fps : optional
-        Program seconds or frames to run (default 10 s, or until the program ends); frames
-        a program second (a :class:`Run` holds the objects at each frame).
-    draft, backend : optional
-        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``).
-    record : str or Path, optional
-        Keep the recording (docs/recording.md) in this ``.jsonl`` or ``.jsonl.gz`` file;
-        a :class:`Video`'s ``run`` is then its :class:`Run`.
+        Program seconds or frames to run (default 10 s or its end); frames a second.
+    draft, backend, record : optional
+        No anti-aliasing; the off-screen OpenGL (``"auto"``, ``"egl"``, ``"osmesa"``); a
+        ``.jsonl[.gz]`` file to keep the recording in (docs/recording.md; ``Video.run``).
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
         (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout`` and
@@ -474,14 +471,16 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     Returns
     -------
     Run or Video
-        A :class:`Run`: objects by the program's own names with their attributes over the
-        frames, graphs, printed text, globals. A :class:`Video`: the file and its frames,
-        the program's ``scene.capture`` pictures in ``images``.
+        A :class:`Run`: objects by the program's names, their attributes over the frames,
+        graphs, printed text, globals. A :class:`Video`: the file, its frames, ``images``.
 
     Raises
     ------
     ProgramError
-        The program raised: its own traceback.
+        The program raised: its own traceback (a test fails with it). After its first
+        frame, ``error.error`` holds its type, message and time ``t``, ``error.run`` the
+        :class:`Run` up to it (None for a video without ``record=``), ``error.video`` the
+        :class:`Video` up to it: credit for the part that ran.
 
     Examples
     --------
@@ -497,22 +496,50 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
                        antialias=not draft, **options)
     if out is None:
         return _as_data(program, record, run_options)
-    result = jobs.vpython(program, out, record=None if record is None else str(record),
-                          **run_options)
+    try:
+        result = jobs.vpython(program, out, record=None if record is None else str(record),
+                              **run_options)
+    except ProgramRaised as exc:        # the files up to the error: its run and video
+        exc.run, exc.video = _output_run(exc.result) if exc.result else (None, None)
+        raise
+    run, video = _output_run(result)
+    return run if video is None else video
+
+
+def _output_run(result) -> tuple[Run | None, Video | None]:
+    """A run to ``out``: its Run (the recording, ``.jsonl`` or ``record=``'s) and, for a
+    video or still, its Video."""
     if result.path.suffix.lower() == ".jsonl":       # the recording alone, kept as ``out``
-        return Run(read_recording(result.path), result, result.path)
+        return Run(read_recording(result.path), result, result.path), None
     kept = result.recording                          # (record=: the video's Run too)
-    return Video(result, None if kept is None else Run(read_recording(kept), result, kept))
+    run = None if kept is None else Run(read_recording(kept), result, kept)
+    return run, Video(result, run)
 
 
 def _as_data(program, record, run_options: dict) -> Run:
     """The program run to a recording alone in a temporary folder, read back (and kept in
-    ``record``, when given)."""
+    ``record``, when given); a program's error after its first frame carries that run."""
     check_record(record)
     folder = Path(tempfile.mkdtemp(prefix="springscene-run-"))
+    scratch = folder / "run.jsonl"
     try:
-        scratch = folder / "run.jsonl"
         result = jobs.vpython(program, scratch, **run_options)
+    except ProgramRaised as exc:
+        if exc.result is None:
+            shutil.rmtree(folder, ignore_errors=True)
+        else:
+            exc.run = _scratch_run(folder, scratch, record, exc.result)
+        raise
+    except BaseException:
+        shutil.rmtree(folder, ignore_errors=True)
+        raise
+    return _scratch_run(folder, scratch, record, result)
+
+
+def _scratch_run(folder: Path, scratch: Path, record, result) -> Run:
+    """The Run of the recording ``scratch`` (kept in ``record`` too, when given); the
+    temporary ``folder`` goes with it."""
+    try:
         recording = read_recording(scratch)
         if record is not None:
             _keep(scratch, Path(record))

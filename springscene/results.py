@@ -266,7 +266,13 @@ class Run:
     canvases : list of dict
         Each canvas's attributes at the end (title, caption, camera, ...).
     ended : str
-        ``"program"`` (it ended), ``"duration"`` or ``"frames"`` (the run's limit).
+        ``"program"`` (it ended), ``"duration"`` or ``"frames"`` (the run's limit), or
+        ``"error"`` (it raised: the run up to its error).
+    error : dict or None
+        The program's own error, when the run ended in one: ``type`` (``"IndexError"``),
+        ``message``, ``t`` (the program time it was raised at, the last frame's),
+        ``line`` (the program's line) and ``traceback``. :func:`springscene.run_vpython`
+        raises the program's error; the run up to it is the error's ``run``.
     recording : Path or None
         The recording's file, when it was kept (``record=``, or an ``out`` ending
         ``.jsonl``).
@@ -302,6 +308,7 @@ class Run:
                        for g in recording.graphs]
         end = recording.end or {}
         self.ended: str = end.get("ended") or getattr(result, "ended", None) or "cut short"
+        self.error: dict | None = recording.error
 
     @property
     def frames(self) -> int:
@@ -346,8 +353,10 @@ class Run:
         named = ", ".join(self.names) or "none named"
         span = f"{self.times[0]:g} to {self.times[-1]:g} s" if self.frames else "no frames"
         graphs = f"{len(self.graphs)} graph{'s' * (len(self.graphs) != 1)}"
+        ended = (f"the program's {self.error['type']}" if self.error is not None
+                 else self.ended)
         return (f"<Run {self.program}: {self.frames} frames at {self.fps} fps, {span}, ended "
-                f"by {self.ended}; {len(self.objects)} object{'s' * (len(self.objects) != 1)} "
+                f"by {ended}; {len(self.objects)} object{'s' * (len(self.objects) != 1)} "
                 f"({named}); {graphs}>")
 
     def page_html(self) -> str:

@@ -10,6 +10,7 @@ last bit, the wiki program's ball is ``springscene simulate``'s. Runs are in thi
 from __future__ import annotations
 
 import csv
+import gc
 import gzip
 import json
 import sys
@@ -24,6 +25,7 @@ from springscene import config, render
 from springscene.errors import ProgramError, UserError
 from springscene.results import Graph, Run, Video
 from springscene.vpython.record import trace
+from springscene.vpython.record.reader import read as read_recording
 
 EXAMPLES = ROOT / "examples"
 GRADING = EXAMPLES / "grading"
@@ -162,7 +164,7 @@ def test_a_bad_record_is_refused_before_the_run(tmp_path, record, message):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
 
 
-def test_a_program_error_is_a_program_error_and_leaves_nothing(tmp_path, monkeypatch):
+def test_a_program_error_is_a_program_error_with_the_run_up_to_it(tmp_path, monkeypatch):
     scratch = tmp_path / "scratch"
     scratch.mkdir()
     monkeypatch.setattr("tempfile.tempdir", str(scratch))    # where a Run's run goes
@@ -173,8 +175,29 @@ def test_a_program_error_is_a_program_error_and_leaves_nothing(tmp_path, monkeyp
             rate(10)
         raise ValueError("no more data")
     """)
-    with pytest.raises(ProgramError, match="no more data"):
+    with pytest.raises(ProgramError, match="no more data") as raised:
         run_here(program, record=tmp_path / "kept.jsonl")
+    run = raised.value.run                   # the run up to the error, kept as asked
+    assert run.ended == "error" and run.error["type"] == "ValueError" and run.times[-1] == 0.5
+    assert run.frames == 26              # 25 frames at 50 fps in 0.5 s, and the error's scene
+    assert read_recording(tmp_path / "kept.jsonl").error == run.error
+    del run, raised
+    gc.collect()
+    assert list(scratch.iterdir()) == []
+
+
+def test_a_program_error_before_the_first_frame_leaves_nothing(tmp_path, monkeypatch):
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
+    monkeypatch.setattr("tempfile.tempdir", str(scratch))
+    program = write(tmp_path, """
+        from vpython import *
+        b = sphere()
+        raise ValueError("no data at all")
+    """)
+    with pytest.raises(ProgramError, match="no data at all") as raised:
+        run_here(program, record=tmp_path / "kept.jsonl")
+    assert raised.value.run is None
     assert list(scratch.iterdir()) == [] and not (tmp_path / "kept.jsonl").exists()
 
 

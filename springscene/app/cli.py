@@ -300,11 +300,23 @@ _COMMANDS = {"simulate": _simulate, "analyze": _analyze, "sweep": _sweep, "figur
              "still": _still, "render": _render}
 
 
+def _dialect_said(args: argparse.Namespace, dialect) -> list[str]:
+    """Which VPython the program was written for, and how it was read (a GlowScript
+    program's RapydScript lines, the names given to a converted one), told before it runs
+    so that they stand above its traceback if it raises; the notes told."""
+    print(f"springscene: {args.program}: written for {dialect.name}", file=sys.stderr)
+    for note in dialect.notes:
+        print(f"springscene: note: {note}", file=sys.stderr)
+    sys.stderr.flush()
+    return list(dialect.notes)
+
+
 def _vpython(args: argparse.Namespace) -> int:
     overlays = tuple(name.strip() for name in args.overlay.split(",") if name.strip())
     if args.overlay.strip() and not overlays:
         raise UserError(f"--overlay {args.overlay!r}: no overlay named (use graph)")
     traces = _traces(args)
+    said: list[str] = []          # the notes on how the program was read, told before it ran
     try:
         with _trace_recording(args, traces) as record:
             result = jobs.vpython(args.program, args.out, duration=args.duration,
@@ -313,9 +325,7 @@ def _vpython(args: argparse.Namespace) -> int:
                                   page=not args.no_page, canvas_only=args.canvas_only,
                                   quality=args.quality, lod=args.lod, record=record,
                                   timeout=args.timeout, max_memory=args.max_memory,
-                                  on_dialect=lambda d: print(f"springscene: {args.program}: "
-                                                             f"written for {d.name}",
-                                                             file=sys.stderr, flush=True))
+                                  on_dialect=lambda d: said.extend(_dialect_said(args, d)))
             traced = read_recording(record or args.out) if traces else None
     except RunEnded as exc:         # os._exit, a signal, --timeout, --max-memory, sys.exit(n)
         print(one_line(str(exc)), file=sys.stderr)
@@ -323,7 +333,8 @@ def _vpython(args: argparse.Namespace) -> int:
     if args.record is None:
         result.recording = None              # (--trace's own, removed)
     for note in result.notes:
-        print(f"springscene: note: {note}", file=sys.stderr)
+        if note not in said:
+            print(f"springscene: note: {note}", file=sys.stderr)
     if not args.quiet:
         print(f"wrote {result.path}: {result.frames} frame{'s' * (result.frames != 1)} "
               f"({result.program_seconds:.2f} s of program time, ended by "

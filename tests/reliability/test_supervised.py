@@ -102,12 +102,23 @@ def test_sys_exit_with_a_message_prints_it_as_python_does(tmp_path, outdir):
     assert "exited with status 1" in lines(proc)[-1] and os.listdir(outdir) == []
 
 
-def test_the_programs_traceback_stays_and_nothing_is_left(tmp_path, outdir):
+def test_the_programs_traceback_stays_and_the_files_up_to_it_are_whole(tmp_path, outdir):
     prog = program(tmp_path, "rate(50)\nscene.capture('early')\n1/0\n")
     proc = run_cli("vpython", prog, "--out", outdir / "x.mp4")
     assert proc.returncode == 1
     assert f'File "{prog}", line 7' in proc.stderr and "ZeroDivisionError" in proc.stderr
-    assert os.listdir(outdir) == []                  # the capture too: the run failed
+    assert lines(proc)[-1] == ("springscene: the video ends at the program's error, at "
+                               "t = 0.02 s (frame 1)")
+    # the video up to the error, its page and the capture: moved out whole, nothing hidden
+    assert sorted(os.listdir(outdir)) == ["early.png", "x.html", "x.mp4"]
+
+
+def test_an_error_before_the_first_frame_leaves_nothing(tmp_path, outdir):
+    prog = program(tmp_path, "scene.capture('early')\n1/0\nrate(50)\n")
+    proc = run_cli("vpython", prog, "--out", outdir / "x.mp4")
+    assert proc.returncode == 1 and "ZeroDivisionError" in proc.stderr
+    assert "ends at the program's error" not in proc.stderr
+    assert os.listdir(outdir) == []                  # the capture too: no frame was taken
 
 
 def test_a_thread_left_running_does_not_keep_springscene_alive(tmp_path, outdir):

@@ -204,7 +204,7 @@ def test_gzip_and_a_recording_cut_short(tmp_path):
         read(tmp_path / "other.jsonl")
 
 
-def test_a_program_error_leaves_no_recording(tmp_path):
+def test_a_program_error_keeps_the_recording_up_to_it(tmp_path):
     prog = write(tmp_path, """
         from vpython import *
         b = sphere()
@@ -216,7 +216,12 @@ def test_a_program_error_leaves_no_recording(tmp_path):
     with pytest.raises(ProgramError, match="no more data"):
         run_program(prog, tmp_path / "v.mp4", RunOptions(fps=10, antialias=False,
                                                          record=str(tmp_path / "r.jsonl")))
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["prog.py", "r.jsonl", "v.html",
+                                                          "v.mp4"]
+    rec = read(tmp_path / "r.jsonl")
+    assert rec.times[-1] == 1.0 and len(rec.times) == 11 and rec["b"].pos[-1, 0] == 10
+    assert (rec.error["type"], rec.error["message"], rec.error["t"], rec.error["line"]) == (
+        "ValueError", "no more data", 1.0, 7)
 
 
 @pytest.mark.parametrize("args, message", [
@@ -432,3 +437,20 @@ def test_every_change_to_a_solid_is_recorded_though_positions_are_read_apart(tmp
             recorder.close({})
         np.testing.assert_array_equal(np.array(rows), truth, err_msg=f"{kind}.{name}")
         assert not np.array_equal(rows[2], rows[0]), (kind, name)
+
+
+def test_globals_holding_none_and_deleted_objects_are_not_names(tmp_path):
+    # a program's None (VPython 6's material_test keeps one) is no object's id, nor is a
+    # list holding one, nor an object deleted before the end
+    program = write(tmp_path, """
+        from vpython import *
+        ball = sphere()
+        nothing = None
+        some = [ball, None]
+        gone = box()
+        gone.visible = False
+        gone.delete()
+        rate(10)
+    """)
+    _, run = record(tmp_path, program, fps=10)
+    assert set(run.names) == {"ball"}

@@ -38,6 +38,7 @@ import numpy as np
 
 from ..core.attributes import Linked
 from ..core.page_order import claim_slot
+from ..core.vectors import is_lenient
 
 __all__ = [
     "graph", "gcurve", "gdots", "gvbars", "ghbars", "gdisplay", "graphs", "reset",
@@ -389,9 +390,20 @@ class gcurve(GraphSeries):
 
 
 class gdots(GraphSeries):
-    """Points as dots (VPython's ``gdots``): ``radius`` (3 px) or ``size``, ``color``, ..."""
+    """Points as dots (VPython's ``gdots``): ``radius`` (3 px) or ``size``, ``color``, ...
+
+    A VPython 6 program may also give ``shape`` ('round' or 'square', VPython 6's
+    ``gdots(shape=)``); it is kept, and the dots are drawn round.
+    """
 
     _kind = "points"
+
+    def __init__(self, **args: Any) -> None:
+        shape = args.pop("shape", "round") if is_lenient() else "round"
+        if shape not in ("round", "square"):
+            raise AttributeError(f"gdots shape must be 'round' or 'square', not {shape!r}")
+        super().__init__(**args)
+        self.shape = shape
 
 
 class gvbars(GraphSeries):

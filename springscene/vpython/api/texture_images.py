@@ -12,11 +12,16 @@ picture (a grey file, ``rough_texture.jpg``, is repeated into RGB as WebGL's
 ``UNPACK_FLIP_Y_WEBGL`` does (GlowScript ``WebGLRenderer.js``
 ``handleLoadedTexture``). ``earth`` is equirectangular, longitude -180 at the
 left edge and north at the top.
+
+A program may also make a picture from numbers (VPython 6's ``materials.texture(data=
+...)``): :func:`keep_picture` keeps it for the run under a source name beginning
+``array:``, which the renderer reads as it reads a file (:func:`kept_picture`).
 """
 
 from __future__ import annotations
 
 import functools
+import hashlib
 from importlib import resources
 
 import numpy as np
@@ -56,4 +61,35 @@ def bump_image(name: str) -> np.ndarray:
     return _data_image(f"{name}_bumpmap.jpg")
 
 
-__all__ = ["builtin_image", "bump_image", "NAMES", "BUMP_NAMES"]
+ARRAY_PREFIX = "array:"
+_kept: dict[str, np.ndarray] = {}
+
+
+def keep_picture(image: np.ndarray) -> str:
+    """Keep a program's picture (``(h, w, 3)`` uint8, top row first) for the run; the
+    source name it is drawn by (the same picture, the same name)."""
+    image = np.ascontiguousarray(image, dtype=np.uint8)
+    digest = hashlib.sha1(image.tobytes() + str(image.shape).encode()).hexdigest()[:16]
+    name = f"{ARRAY_PREFIX}{image.shape[1]}x{image.shape[0]}:{digest}"
+    if name not in _kept:
+        image.setflags(write=False)
+        _kept[name] = image
+    return name
+
+
+def is_kept(source: str) -> bool:
+    return source in _kept
+
+
+def kept_picture(source: str) -> np.ndarray:
+    """The picture kept under ``source`` by :func:`keep_picture`."""
+    return _kept[source]
+
+
+def forget_pictures() -> None:
+    """Forget the pictures a program made (a new run starts without them)."""
+    _kept.clear()
+
+
+__all__ = ["builtin_image", "bump_image", "NAMES", "BUMP_NAMES", "ARRAY_PREFIX",
+           "keep_picture", "is_kept", "kept_picture", "forget_pictures"]

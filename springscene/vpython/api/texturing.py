@@ -104,6 +104,10 @@ def _source(name: str) -> tuple[str | None, str]:
 
 @functools.lru_cache(maxsize=256)
 def _resolve(name: str, cwd: str, folder: str) -> tuple[str | None, str]:
+    if name.startswith(texture_images.ARRAY_PREFIX):
+        if texture_images.is_kept(name):
+            return name, ""
+        return None, f"texture {name!r}: no such picture made in this run; drawn without it"
     builtin = builtin_name(name)
     if builtin is not None:
         return "builtin:" + builtin, ""
@@ -213,6 +217,8 @@ def image_of(source: str) -> np.ndarray:
     """The picture of a :class:`TextureSpec` source: ``(h, w, 3)`` uint8, top row first."""
     if source.startswith("builtin:"):
         return texture_images.builtin_image(source[len("builtin:"):])
+    if source.startswith(texture_images.ARRAY_PREFIX):
+        return texture_images.kept_picture(source)
     return _read(source, os.stat(source).st_mtime_ns)
 
 
@@ -259,9 +265,11 @@ def load(spec: TextureSpec) -> np.ndarray | None:
 
 
 def reset() -> None:
-    """Forget resolved names (a new program may have its own files)."""
+    """Forget resolved names (a new program may have its own files) and the pictures a
+    program made."""
     _resolve.cache_clear()
     _read.cache_clear()
+    texture_images.forget_pictures()
 
 
 __all__ = ["textures", "bumpmaps", "TextureSpec", "spec_of", "image_of", "load", "bump_of",

@@ -87,6 +87,11 @@ def _lenient_components(args: tuple) -> tuple[float, float, float]:   # (), (x, 
     return values[0], values[1], values[2]
 
 
+def _is_rows(value) -> bool:       # VPython 6: an N x 3 numpy array, a vector each row
+    shape = getattr(value, "shape", None)
+    return shape is not None and len(shape) == 2 and shape[1] == 3
+
+
 def _scalar(other):
     """``other`` as a float if it is a real number (numpy scalars too), else None."""
     if isinstance(other, _Real) and not isinstance(other, vector):
@@ -253,6 +258,8 @@ class vector:
             return v
         if _lenient and _is_triple(other):
             return self.__add__(vector(*_lenient_components((other,))))
+        if _lenient and _is_rows(other):
+            return other + (self._x, self._y, self._z)
         return NotImplemented
 
     def __sub__(self, other):
@@ -265,16 +272,22 @@ class vector:
             return v
         if _lenient and _is_triple(other):
             return self.__sub__(vector(*_lenient_components((other,))))
+        if _lenient and _is_rows(other):
+            return (self._x, self._y, self._z) - other
         return NotImplemented
 
     def __radd__(self, other):          # VPython 6: (1, 2, 3) + v
         if _lenient and _is_triple(other):
             return vector(*_lenient_components((other,))).__add__(self)
+        if _lenient and _is_rows(other):
+            return other + (self._x, self._y, self._z)
         return NotImplemented
 
     def __rsub__(self, other):
         if _lenient and _is_triple(other):
             return vector(*_lenient_components((other,))).__sub__(self)
+        if _lenient and _is_rows(other):
+            return other - (self._x, self._y, self._z)
         return NotImplemented
 
     def __mul__(self, other):

@@ -14,12 +14,21 @@ programs rely on it, the names here are too:
 - ``sqrt(-1e-17)``, ``acos(1.0000000000000002)``, ``log(0)``: JavaScript's ``Math``
   gives NaN or -Infinity where Python's ``math`` raises;
 - ``factorial(5.0)``: whole-number floats are accepted.
+
+Older GlowScript gave a little more (``package/compiler.1.1.min.js``, ``glow.1.1.min.js``
+in vpython/glowscript): ``version`` is the header's, ``sleep(t, wait)`` and
+``rate(n, wait)`` take GlowScript 1's ``wait``, and before RapydScript-NG (GlowScript
+2.3) JavaScript's ``true`` and ``false`` passed through. A VPython 7 program converted
+from GlowScript (its header left as a comment) gets, from :func:`converted_names`,
+the names of these it uses and never defines, which VPython 7 lacks.
 """
 
 from __future__ import annotations
 
+import builtins
 import math
 import random
+import re
 import time
 import types
 from typing import Any
@@ -118,8 +127,13 @@ def alert(*args) -> None:
     widgets.skipped(f"alert({' '.join(map(str, args))!r}): no user, printed as a note")
 
 
-def names(vp: types.ModuleType) -> dict[str, Any]:
-    """Every name a GlowScript program may use without importing."""
+def gs_sleep(dt, *wait) -> None:
+    """``sleep(dt)``, and GlowScript 1's ``sleep(dt, wait)``."""
+    runtime.sleep(dt)
+
+
+def names(vp: types.ModuleType, version: str = "3.2") -> dict[str, Any]:
+    """Every name a GlowScript program of ``version`` may use without importing."""
     found = {name: getattr(vp, name) for name in vp.__all__}
     for name, on_error in (("sqrt", _NAN), ("acos", _NAN), ("asin", _NAN), ("log", -math.inf),
                            ("log10", -math.inf), ("log2", -math.inf), ("pow", _NAN)):
@@ -127,7 +141,42 @@ def names(vp: types.ModuleType) -> dict[str, Any]:
     found.update(range=gs_range, rate=gs_rate, factorial=factorial, msclock=msclock,
                  print_options=print_options, display=vp.canvas, gdisplay=vp.graph,
                  vp_graph=vp.graph, Math=_math_namespace(), alert=alert,
-                 console=types.SimpleNamespace(log=print), version=["3.2", "glowscript"],
+                 console=types.SimpleNamespace(log=print), version=[version, "glowscript"],
                  series=lambda **options: series(vp, **options), wait=None,
-                 download=download)
+                 download=download, sleep=gs_sleep)
+    if before(version, "2.3"):       # RapydScript before -NG let JavaScript's through
+        found.update(true=True, false=False)
     return found
+
+
+def before(version: str, than: str) -> bool:
+    """Whether GlowScript ``version`` ("1.1", "3.3dev") is older than ``than``."""
+    def parts(text: str) -> tuple[int, ...]:
+        return tuple(int(p) for p in re.findall(r"\d+", text))
+    return parts(version) < parts(than)
+
+
+def converted_names(vp: types.ModuleType, unbound: set[str],
+                    version: str = "3.2") -> tuple[dict[str, Any], str | None]:
+    """For a VPython 7 program converted from GlowScript ``version``: GlowScript's names
+    among those it reads and never binds (``unbound``) that neither ``from vpython import
+    *`` nor Python gives (``display``, ``gdisplay``, ...), and ``range`` taking floats
+    (noted when it does); with the note naming them (None when none is given)."""
+    glow = names(vp, version)
+    given = {n: glow[n] for n in sorted(unbound)
+             if n in glow and n not in vp.__all__ and not hasattr(builtins, n)}
+    note = (f"{', '.join(given)}: GlowScript's name{'s' * (len(given) > 1)}, given to this "
+            f"program converted from GlowScript {version} (VPython 7 has none)"
+            if given else None)
+    if "range" in unbound:
+        given["range"] = _noted_range
+    return given, note
+
+
+def _noted_range(*args):
+    """Python's ``range``, or for floats GlowScript's, with a note that it was."""
+    if all(isinstance(a, int) for a in args):
+        return range(*args)
+    widgets.skipped("range() of floats: GlowScript's range, which takes them, as in the "
+                    "GlowScript program this was converted from")
+    return gs_range(*args)

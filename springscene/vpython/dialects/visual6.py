@@ -14,6 +14,12 @@ numpy 2 is not star-imported: it would bind ``max``/``min``/``abs``/``round``/``
 over the builtins (``max(a, b)`` then means an axis). The names numpy 1.x gave and
 numpy 2 dropped (``float_``, ``Inf``, ``product``, ...) are put back.
 
+``mag``, ``mag2``, ``norm`` and ``cross`` also take N x 3 numpy arrays, row by row, as
+VPython 6's ``cvisual`` did (``src/python/wrap_vector.cpp``); ``dot`` is ``visual``'s,
+numpy's for arrays. ``color`` is VPython 6's (tuples from its functions), ``text``,
+``gcurve``/``gdots``/``gvbars``/``ghbars``, ``shapes`` and ``paths`` take VPython 6's
+positional arguments (:mod:`.visual6_extras`).
+
 Vectors: VPython 6 took tuples, lists and arrays wherever a vector goes and let a
 vector act as a sequence; :func:`springscene.vpython.core.vectors.set_lenient` turns that
 on for the run (the runner does it for VPython 6 programs).
@@ -21,6 +27,7 @@ on for the run (the runner does it for VPython 6 programs).
 
 from __future__ import annotations
 
+import functools
 import math
 import time
 import types
@@ -28,10 +35,14 @@ from typing import Any
 
 import numpy as np
 
+from . import visual6_modules
 from ..core import vectors as _vector_module
 from ..core.vectors import as_vector, vector
 from ..objects.frames import frame
-from .visual6_extras import button, controls, ghistogram, materials, menu, slider, toggle
+from ..objects.array_surfaces import convex, faces
+from . import visual6_extras as _extras
+from .visual6_extras import (button, controls, crayola, ghistogram, materials, menu, slider,
+                             toggle)
 
 # numpy names that would shadow a builtin VPython 6 programs use as the builtin
 _NOT_FROM_NUMPY = {"abs", "max", "min", "round", "pow", "bool", "divmod", "int", "float",
@@ -69,30 +80,71 @@ def _vec(v) -> vector:
     return v if isinstance(v, vector) else as_vector(v, "vector")
 
 
-def mag(A) -> float:
-    return _vec(A).mag
+def _table(A) -> np.ndarray | None:
+    """An N x 3 numpy array as VPython 6's array functions took it (``wrap_vector.cpp``:
+    ``mag_a``, ``norm_a``, ``cross_a_a`` ...), as floats; None for anything else (a
+    vector, a tuple, one 3-array), which is one vector."""
+    if not isinstance(A, np.ndarray) or A.ndim == 1 and A.shape[0] in (2, 3):
+        return None
+    if A.ndim != 2 or A.shape[1] != 3:
+        raise ValueError("Array must be Nx3 in shape.")
+    return np.asarray(A, dtype=float)
 
 
-def mag2(A) -> float:
-    return _vec(A).mag2
+def _xyz(v) -> np.ndarray:
+    return np.array(_vec(v)._xyz())
 
 
-def norm(A) -> vector:
-    return _vec(A).norm()
+def mag(A):
+    """A vector's magnitude; of an N x 3 array, each row's (an array of N)."""
+    rows = _table(A)
+    if rows is None:
+        return _vec(A).mag
+    return np.sqrt(np.einsum("ij,ij->i", rows, rows))
+
+
+def mag2(A):
+    """A vector's magnitude squared; of an N x 3 array, each row's."""
+    rows = _table(A)
+    if rows is None:
+        return _vec(A).mag2
+    return np.einsum("ij,ij->i", rows, rows)
+
+
+def norm(A):
+    """A unit vector; of an N x 3 array, each row made unit (a zero row stays zero)."""
+    rows = _table(A)
+    if rows is None:
+        return _vec(A).norm()
+    m = np.sqrt(np.einsum("ij,ij->i", rows, rows))[:, None]
+    return np.divide(rows, m, out=np.zeros_like(rows), where=m > 0)
 
 
 def dot(A, B):
-    """A vector dot product for vectors (or 3-sequences), numpy's ``dot`` otherwise."""
+    """``visual``'s ``dot`` (``visual_all.py``): a vector dot product for two vectors,
+    numpy's ``dot`` when an array is in it (``dot(rows, v)``: each row's). Two N x 3
+    arrays that numpy cannot multiply (N != 3) are dotted row by row, as VPython 6's
+    own ``cvisual.dot`` did."""
+    if isinstance(A, np.ndarray) or isinstance(B, np.ndarray):
+        a = _xyz(A) if isinstance(A, vector) else np.asarray(A)
+        b = _xyz(B) if isinstance(B, vector) else np.asarray(B)
+        if a.ndim == 2 and a.shape == b.shape and a.shape[1] == 3 and a.shape[0] != 3:
+            return np.einsum("ij,ij->i", a, b)
+        return np.dot(a, b)
     if isinstance(A, vector) or isinstance(B, vector):
         return _vec(A).dot(_vec(B))
     return np.dot(A, B)
 
 
 def cross(A, B):
-    """A vector cross product; numpy's ``cross`` for arrays of vectors (N x 3)."""
-    if np.ndim(A) == 2 or np.ndim(B) == 2:
-        return np.cross(A, B)
-    return _vec(A).cross(_vec(B))
+    """A vector cross product; with an N x 3 array (and a vector or another N x 3 array
+    of the same shape), each row's, an N x 3 array."""
+    a, b = _table(A), _table(B)
+    if a is None and b is None:
+        return _vec(A).cross(_vec(B))
+    if a is not None and b is not None and a.shape != b.shape:
+        raise ValueError("Array shape mismatch.")
+    return np.cross(_xyz(A) if a is None else a, _xyz(B) if b is None else b)
 
 
 def proj(A, B) -> vector:
@@ -167,6 +219,16 @@ def _exit(*args) -> None:
     raise SystemExit(0)
 
 
+@functools.cache
+def _positional_classes(vp: types.ModuleType) -> dict[str, type]:
+    """VPython 7's classes that VPython 6 made with positional arguments, taking them
+    (:func:`.visual6_extras.positional`), made once so that every module gives the same."""
+    made = {"text": _extras.positional(vp.text, _extras.TEXT_ARGS)}
+    for name, args in _extras.SERIES_ARGS.items():
+        made[name] = _extras.positional(getattr(vp, name), args, drop=("shape",))
+    return made
+
+
 def namespace(vp: types.ModuleType) -> dict[str, Any]:
     """The names ``from visual import *`` binds, in VPython 6's order."""
     names: dict[str, Any] = {n: getattr(math, n) for n in dir(math) if not n.startswith("_")}
@@ -178,13 +240,17 @@ def namespace(vp: types.ModuleType) -> dict[str, Any]:
             names[n] = getattr(vp, n)
     names.update(vector=vector, vec=vector, mag=mag, mag2=mag2, norm=norm, dot=dot,
                  cross=cross, proj=proj, comp=comp, diff_angle=diff_angle, rotate=rotate,
-                 display=vp.canvas, crayola=vp.color, color=vp.color, materials=materials,
+                 display=vp.canvas, crayola=crayola, color=crayola, materials=materials,
                  frame=frame, random=_Random(), exit=_exit, scene=vp.scene,
-                 version=("6.11", "release"))
+                 text=_positional_classes(vp)["text"], version=("6.11", "release"),
+                 shapes=_extras.Outlines(vp.shapes, _extras.SHAPES_ARGS, _extras.SHAPE_NAMES),
+                 paths=_extras.Outlines(vp.paths, _extras.PATHS_ARGS))
     names["sum"], names["any"], names["all"] = (_numpy_or_builtin(np.sum, sum),
                                                 _numpy_or_builtin(np.any, any),
                                                 _numpy_or_builtin(np.all, all))
+    names.update(faces=faces, convex=convex)        # VPython 6's array surfaces
     names.update(math=math, numpy=np)      # visual's own imports, bound by its star import
+    names.update(visual6_modules.names(vp, names))
     return names
 
 
@@ -197,13 +263,16 @@ def _module(name: str, names: dict[str, Any]) -> types.ModuleType:
 
 
 def _graph_names(vp: types.ModuleType) -> dict[str, Any]:
-    """``from visual.graph import *``: the plotting names, numpy's basics, math's
-    scalar ``log10``/``modf``, and the ``time`` module."""
-    names = {n: getattr(vp, n) for n in ("vector", "label", "curve", "points", "color",
-                                         "distant_light", "gcurve", "gdots", "gvbars",
-                                         "ghbars")}
-    names.update(display=vp.canvas, crayola=vp.color, gdisplay=vp.graph,
+    """``from visual.graph import *``: everything ``from visual import *`` gives (VPython
+    5's and 6.0's ``visual/graph.py`` began ``from .visual_all import *``), then the
+    plotting names, numpy's basics, math's scalar ``log10``/``modf`` and the ``time``
+    module, as ``graph.py``'s own imports bound them."""
+    names = namespace(vp)
+    names.update({n: getattr(vp, n) for n in ("vector", "label", "curve", "points",
+                                              "distant_light")})
+    names.update(display=vp.canvas, crayola=crayola, color=crayola, gdisplay=vp.graph,
                  ghistogram=ghistogram, time=time, log10=math.log10, modf=math.modf)
+    names.update({n: c for n, c in _positional_classes(vp).items() if n != "text"})
     names.update({n: getattr(np, n) for n in ("array", "arange", "ndarray", "zeros", "sort",
                                               "searchsorted", "concatenate")})
     return names
@@ -211,19 +280,25 @@ def _graph_names(vp: types.ModuleType) -> dict[str, Any]:
 
 def _controls_names(vp: types.ModuleType) -> dict[str, Any]:
     names = {n: getattr(vp, n) for n in ("box", "cylinder", "distant_light", "label",
-                                         "sphere", "vector", "color")}
-    names.update(display=vp.canvas, crayola=vp.color, mag=mag, norm=norm, pi=math.pi,
-                 sin=math.sin, cos=math.cos, controls=controls, frame=frame, button=button,
-                 toggle=toggle, slider=slider, menu=menu)
+                                         "sphere", "vector")}
+    names.update(display=vp.canvas, crayola=crayola, color=crayola, mag=mag, norm=norm,
+                 pi=math.pi, sin=math.sin, cos=math.cos, controls=controls, frame=frame,
+                 button=button, toggle=toggle, slider=slider, menu=menu)
     return names
 
 
+_STROKE_TEXT_ARGS = ("pos", "axis", "string", "justify", "height", "width", "depth", "color",
+                     "up", "visible")
+
+
 def _stroke_text(vp: types.ModuleType):
-    """``visual.text``'s ``text(pos=, string=, height=, depth=, justify=, ...)``, drawn as
-    VPython 7's 3D text."""
-    def text(string: str = "", justify: str = "left", **options: Any):
+    """``visual.text``'s ``text(pos, axis, string, justify, height, width, depth, color,
+    up, visible)``, drawn as VPython 7's 3D text."""
+    def text(*args: Any, **options: Any):
+        options = _extras._named("text", _STROKE_TEXT_ARGS, args, options)
         options.pop("width", None)
-        made = vp.text(text=str(options.pop("text", string)), align=justify, **options)
+        string = options.pop("text", options.pop("string", ""))
+        made = vp.text(text=str(string), align=options.pop("justify", "left"), **options)
 
         def reshape(**changes: Any) -> None:          # visual.text's way to change it
             for name, value in changes.items():
@@ -255,6 +330,7 @@ def modules(vp: types.ModuleType) -> dict[str, types.ModuleType]:
     vis = _module("vis", {k: v for k, v in namespace(vp).items()
                           if k in vp.__all__ or k in ("display", "frame", "materials")})
     found["vis"] = vis
+    visual6_modules.complete(found)
     return found
 
 

@@ -10,15 +10,29 @@
   counts the data into the bins.
 - ``controls(...)``: VPython 6's separate window of widgets. With no user its
   widgets never fire; it only holds them.
+- positional arguments where VPython 6's constructors had them (:func:`positional`):
+  3D ``text(pos, axis, up, height, color, ...)``, ``gcurve(dot, dot_color, size,
+  shape)``, ``gdots(size, shape)``,
+  ``gvbars(delta)``, ``ghbars(delta)``, ``controls(x, y, width, height, range, ...)``.
+  ``shapes.*`` and ``paths.*`` take VPython 6's order of arguments (:class:`Outlines`).
+  VPython 6's objects (``sphere``, ``curve``, ``label``, ``points`` ...) took keywords
+  only (``py_renderable.__init__(self, **keywords)``), and so do these.
+- ``color`` (``crayola``): VPython 6's colour functions take a tuple, a list or a
+  vector and return a tuple (``visual_common/crayola.py``): ``gray(x)``,
+  ``rgb_to_hsv``, ``hsv_to_rgb``, ``rgb_to_grayscale``.
 """
 
 from __future__ import annotations
 
+import colorsys
+import inspect
 from typing import Any
 
 import numpy as np
 
 from ..core import runtime, widgets
+from ..core.canvases import color as _colors
+from ..core.vectors import vector
 from ..api.graphs import gvbars
 from ..api.texturing import textures
 
@@ -44,6 +58,14 @@ class Material:
         return f"materials.{self.name}"
 
 
+class _MaterialMaker(Material):
+    """A name of ``materials`` springscene does not know: a plain look, and a function
+    (``materials.texture(data=materials.loadTGA("wood"))``) that makes one."""
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Material:
+        return Material("diffuse")
+
+
 class _Materials:
     """``materials``: VPython 6's looks, by name."""
 
@@ -54,7 +76,7 @@ class _Materials:
     def __getattr__(self, name: str) -> Material:     # texture(), loadTGA, show_mat_pos ...
         if name.startswith("__"):
             raise AttributeError(name)
-        return Material("diffuse")
+        return _MaterialMaker("diffuse")
 
 
 materials = _Materials()
@@ -103,7 +125,8 @@ class ghistogram:
 class controls:
     """VPython 6's controls window: holds its widgets, which no user ever works."""
 
-    def __init__(self, **args: Any) -> None:
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        args = _named("controls", CONTROLS_ARGS, args, kwargs)
         self.__dict__.update(args)
         self.display = None
 
@@ -155,3 +178,154 @@ def menu(**args: Any) -> widgets.menu:
     m = widgets.menu(**args)
     m.items = []
     return m
+
+
+
+def _rgb(T) -> tuple[float, float, float]:
+    """VPython 6's colour argument: any sequence (tuple, list, vector, array), its first
+    three numbers."""
+    if isinstance(T, vector):
+        return T.x, T.y, T.z
+    r, g, b = (float(c) for c in list(T)[:3])
+    return r, g, b
+
+
+class Crayola(type(_colors)):
+    """``color`` (``crayola``) in VPython 6: VPython 7's named colours, and functions that
+    take a tuple (or a vector) and return a tuple, as ``visual_common/crayola.py``'s did."""
+
+    @staticmethod
+    def gray(luminance: float) -> tuple[float, float, float]:
+        return (luminance, luminance, luminance)
+
+    grey = gray
+
+    @staticmethod
+    def rgb_to_hsv(T) -> tuple[float, float, float]:
+        return colorsys.rgb_to_hsv(*_rgb(T))
+
+    @staticmethod
+    def hsv_to_rgb(T) -> tuple[float, float, float]:
+        return colorsys.hsv_to_rgb(*_rgb(T))
+
+    @staticmethod
+    def rgb_to_grayscale(T) -> tuple[float, float, float]:
+        r, g, b = _rgb(T)
+        luminance = 0.21 * r + 0.71 * g + 0.07 * b
+        return (luminance, luminance, luminance)
+
+
+crayola = Crayola()
+
+
+# VPython 6's positional arguments, in order (visual_common/graph.py, controls.py,
+# primitives.py; VPython 5's vis/ the same)
+TEXT_ARGS = ("pos", "axis", "up", "height", "color", "x", "y", "z", "red", "green", "blue",
+             "text", "font", "align", "visible", "twosided", "depth", "material", "spacing",
+             "vertical_spacing")
+CONTROLS_ARGS = ("x", "y", "width", "height", "range", "title", "foreground", "background")
+SERIES_ARGS = {"gcurve": ("dot", "dot_color", "size", "shape"), "gdots": ("size", "shape"),
+               "gvbars": ("delta",), "ghbars": ("delta",)}
+
+
+def _named(what: str, names: tuple[str, ...], args: tuple, kwargs: dict) -> dict:
+    """Positional arguments given their VPython 6 names, joined to the keywords."""
+    if len(args) > len(names):
+        raise TypeError(f"{what}() takes at most {len(names)} positional arguments "
+                        f"({len(args)} given)")
+    for name, value in zip(names, args):
+        if name in kwargs:
+            raise TypeError(f"{what}() got multiple values for argument {name!r}")
+        kwargs[name] = value
+    return kwargs
+
+
+def positional(cls: type, names: tuple[str, ...], drop: tuple[str, ...] = ()) -> type:
+    """``cls`` that also takes VPython 6's positional arguments ``names`` (in order), and
+    accepts (and ignores) the keywords ``drop`` VPython 6 had and VPython 7 has not."""
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs = _named(cls.__name__, names, args, kwargs)
+        for name in drop:
+            kwargs.pop(name, None)
+        cls.__init__(self, **kwargs)
+    return type(cls.__name__, (cls,), {"__init__": __init__, "__doc__": cls.__doc__,
+                                       "__module__": __name__})
+
+
+
+_SCALES = ("scale", "xscale", "yscale")
+_LOOKS = ("roundness", "invert") + _SCALES
+# VPython 6's order of arguments (visual_common/shapes.py), where VPython 7's differs
+SHAPES_ARGS = {
+    "rectangle": ("pos", "width", "height", "rotate", "thickness") + _LOOKS,
+    "cross": ("pos", "width", "thickness", "rotate") + _LOOKS,
+    "trapezoid": ("pos", "width", "height", "top", "rotate", "thickness") + _LOOKS,
+    "circle": ("pos", "radius", "np") + _SCALES + ("thickness", "angle1", "angle2", "rotate"),
+    "line": ("pos", "np", "rotate") + _SCALES + ("thickness", "start", "end", "path"),
+    "arc": ("pos", "radius", "np", "rotate") + _SCALES + ("thickness", "angle1", "angle2",
+                                                          "path"),
+    "ellipse": ("pos", "width", "height", "np", "rotate", "thickness") + _SCALES +
+               ("angle1", "angle2"),
+    "ngon": ("pos", "np", "length", "radius", "rotate", "thickness") + _LOOKS,
+    "triangle": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "pentagon": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "hexagon": ("pos", "length", "rotate", "roundness", "thickness", "invert") + _SCALES,
+    "star": ("pos", "radius", "n", "iradius", "rotate", "thickness") + _LOOKS,
+    "pointlist": ("pos", "rotate", "roundness", "invert") + _SCALES + ("path",),
+    "gear": ("pos", "n", "radius", "phi", "addendum", "dedendum", "fradius", "rotate",
+             "scale", "internal", "res", "bevel"),
+    "rackGear": ("pos", "n", "radius", "phi", "addendum", "dedendum", "fradius", "rotate",
+                 "scale", "length", "res", "bevel", "depth"),
+}
+# ... visual_common/paths.py
+PATHS_ARGS = {
+    "rectangle": ("pos", "width", "height", "rotate", "thickness") + _LOOKS + ("up",),
+    "cross": ("pos", "width", "thickness", "rotate") + _LOOKS + ("up",),
+    "trapezoid": ("pos", "width", "height", "top", "rotate", "thickness") + _LOOKS + ("up",),
+    "circle": ("pos", "radius", "np", "thickness") + _SCALES + ("up",),
+    "line": ("start", "end", "np"),
+    "arc": ("pos", "radius", "np", "rotate", "angle1", "angle2", "thickness") + _SCALES +
+           ("up",),
+    "ellipse": ("pos", "width", "height", "np", "thickness") + _SCALES + ("up",),
+    "ngon": ("pos", "np", "length", "radius", "rotate", "thickness") + _LOOKS + ("up",),
+    "triangle": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "pentagon": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "hexagon": ("pos", "np", "length", "rotate", "thickness") + _LOOKS + ("up",),
+    "star": ("pos", "radius", "n", "iradius", "rotate", "thickness") + _LOOKS + ("up",),
+    "pointlist": ("pos", "rotate", "thickness") + _LOOKS + ("up",),
+}
+# VPython 6's names of VPython 7's shapes
+SHAPE_NAMES = {"pointlist": "points", "rackGear": "rackgear"}
+
+
+class Outlines:
+    """VPython 6's ``shapes`` or ``paths``: each of VPython 7's functions, called with
+    VPython 6's order of positional arguments (``shapes.ngon(pos, np, length)``,
+    ``shapes.star(pos, radius, n)``), and VPython 6's names for two (``pointlist``,
+    ``rackGear``). An argument given by position that VPython 7's function has no option
+    for is dropped, as it made no difference VPython 7 keeps."""
+
+    def __init__(self, outlines: Any, orders: dict[str, tuple[str, ...]],
+                 names: dict[str, str] | None = None) -> None:
+        names = {**{n: n for n in dir(outlines) if not n.startswith("_")}, **(names or {})}
+        for name, own in names.items():
+            made = getattr(outlines, own, None)
+            if made is not None:
+                setattr(self, name, _ordered(name, made, orders.get(name)))
+
+
+def _ordered(name: str, made: Any, order: tuple[str, ...] | None) -> Any:
+    """``made`` taking its positional arguments in ``order`` (VPython 6's)."""
+    if order is None or not callable(made):
+        return made
+    taken = inspect.signature(made).parameters
+    if any(p.kind is p.VAR_KEYWORD for p in taken.values()):
+        taken = None
+
+    def outline(*args: Any, **kwargs: Any):
+        named = _named(name, order, args, {})
+        if taken is not None:
+            named = {k: v for k, v in named.items() if k in taken}
+        return made(**named, **kwargs)
+    outline.__name__ = name
+    return outline

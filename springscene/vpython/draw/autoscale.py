@@ -38,6 +38,7 @@ import numpy as np
 from ..objects import frames
 from ..geometry import placement, meshes
 from ..core.canvases import canvases
+from . import surface_meshes
 
 CENTERED = ("box", "sphere", "ring", "compound")
 ANCHORED = ("cylinder", "cone", "pyramid", "helix")
@@ -227,6 +228,9 @@ class Extents:
                 z = self._curve(o)
             elif kind == "points":
                 z = self._points(o)
+            elif kind in surface_meshes.KINDS:       # VPython 6's faces and convex
+                box = surface_meshes.box(o)
+                z = None if box is None else self._store(o, None, box)
             elif kind in BOXED:
                 e, key = self.entries.get(id(o)), _key(o)
                 if e is None or e[0] is not o or e[1] != key:

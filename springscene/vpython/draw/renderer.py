@@ -37,6 +37,7 @@ from .impostors import SphereBatch
 from .instanced import InstancedBatch
 from .capsules import CapsuleBatch
 from . import capsules, impostors
+from . import surface_meshes
 
 SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and range
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
@@ -205,7 +206,8 @@ class Renderer:
     def _style(self, key: tuple) -> dict:
         ambient = float(np.mean(self.cv.ambient.value))
         style = {"ambient": ambient, "opacity": 1.0, "shininess": 0.6, "emissive": False}
-        if key[0] in TEMPLATES or key[0] in ("arrow", "helix", "ring", "compound"):
+        if key[0] in TEMPLATES or key[0] in ("arrow", "helix", "ring", "compound",
+                                             *surface_meshes.KINDS):
             style.update(opacity=key[1], shininess=key[2], emissive=key[3])
         elif key[0] in ("tube", "sphere-points", "lines", "points", "triangle"):
             style.update(shininess=key[1], emissive=key[2])   # a triangle's opacity: RGBA
@@ -228,6 +230,9 @@ class Renderer:
                             a["covered"], a["signature"], style)
         elif kind == "triangle":
             self._draw_polygons(batch, key, objs, style)
+        elif kind in surface_meshes.KINDS:      # VPython 6's faces and convex
+            self._draw_meshes(batch, key, surface_meshes.meshes(objs), style)
+            surface_meshes.one_sided(batch, key)
         elif kind == "helix":             # one vectorised mesh, detail by screen size
             helix_batches.draw(batch, objs, self.view, style,
                                full=self.lod.full_helices(self.antialias), lod=self.lod)

@@ -7,6 +7,13 @@ vectors or dictionaries ``{"pos": v, "color": c, "radius": r}``; ``append``,
 (trails use it). A curve of radius 0 is a thin lit tube whose width follows the range;
 ``points`` are lit balls of ``radius`` pixels (or world units with ``size_units="world"``),
 both as :mod:`..geometry.point_meshes` draws them.
+
+In a VPython 6 program (:func:`..core.vectors.is_lenient`) the points are also numpy
+arrays, as VPython 6's ``arrayprim`` (``src/python/arrayprim.cpp``) kept them: ``c.pos``
+and ``c.color`` N x 3, ``c.x`` ... ``c.blue`` their columns. Reading one gives a live
+view (:class:`LivePoints`): a write through it changes the points as ``modify`` does.
+Setting one replaces the points, resizing the list (fewer keep the last ones, more repeat
+the last point); a single colour colours every point.
 """
 
 from __future__ import annotations
@@ -17,6 +24,94 @@ from ..core.attributes import Linked
 from .base import _Base
 from ..core.checks import _vec, one_of
 from ..core.vectors import is_lenient, vector
+
+_COLUMNS = {"x": ("pos", 0), "y": ("pos", 1), "z": ("pos", 2),
+            "red": ("color", 0), "green": ("color", 1), "blue": ("color", 2)}
+
+
+def _plain(value):
+    """A value numpy can take: a live array as a plain one, a vector as its 3 numbers."""
+    if isinstance(value, LivePoints):
+        return value.view(np.ndarray)
+    return np.array(value._xyz()) if isinstance(value, vector) else value
+
+
+class LivePoints(np.ndarray):
+    """A VPython 6 curve's ``pos`` or ``color`` (or a slice of one), as VPython 6 handed
+    them out: a view of the points, so that ``c.pos[3] = (1, 2, 3)``, ``c.pos[:, 1] += 0.1``
+    and ``c.x *= 2`` move the drawn points. Anything computed from it (``c.pos * 2``, a
+    copy) is a plain array."""
+
+    _owner = None        # (the curve, "pos" or "color", the array this views)
+
+    def __array_finalize__(self, obj) -> None:
+        owner = getattr(obj, "_owner", None)
+        self._owner = owner if owner is not None and np.may_share_memory(self, owner[2]) \
+            else None
+
+    def _wrote(self) -> None:
+        if self._owner is not None:
+            self._owner[0]._array_written(*self._owner[1:])
+
+    def __setitem__(self, key, value) -> None:
+        super().__setitem__(key, _plain(value))
+        self._wrote()
+
+    def __array_ufunc__(self, ufunc, method, *inputs, out=None, **kwargs):
+        if out is not None:
+            kwargs["out"] = tuple(_plain(o) for o in out)
+        result = getattr(ufunc, method)(*(_plain(x) for x in inputs), **kwargs)
+        if out is None:
+            return result
+        for o in out:
+            if isinstance(o, LivePoints):
+                o._wrote()
+        return out[0] if len(out) == 1 else out
+
+    def __repr__(self) -> str:
+        return repr(self.view(np.ndarray))
+
+
+for _op in ("__iadd__", "__isub__", "__imul__", "__itruediv__"):   # a vector: its 3 numbers
+    setattr(LivePoints, _op, lambda self, v, _f=getattr(np.ndarray, _op): _f(self, _plain(v)))
+
+
+def _is_table(value) -> bool:
+    """An N x 3 array or a list of triples (one colour each), not one colour."""
+    if isinstance(value, np.ndarray):
+        return value.ndim == 2
+    return isinstance(value, (list, tuple)) and bool(value) and not all(
+        isinstance(c, (int, float, np.number)) for c in value)
+
+
+def _rows(value, name: str) -> np.ndarray:
+    """What VPython 6 took for ``pos`` or ``color``: an N x 3 (or N x 2, z = 0) array, a
+    list of vectors or tuples, or one vector, as an (n, 3) array of floats."""
+    if hasattr(value, "pos") and not isinstance(value, (np.ndarray, list, tuple, vector)):
+        value = value.pos                      # a path (paths.circle(...)) as VPython 6 took
+    if isinstance(value, vector):
+        return np.array([value._xyz()])
+    if _is_table(value) and not isinstance(value, np.ndarray):
+        value = [_vec(v, name)._xyz() for v in value]
+    a = np.array(value, dtype=float)
+    if a.ndim == 1 and a.size in (0, 2, 3):            # none, or one point
+        a = a.reshape(-1, a.size or 3)
+    if a.ndim != 2 or a.shape[1] not in (2, 3):
+        raise ValueError(f"{name} must be an Nx3 array")
+    if a.shape[1] == 2:
+        a = np.column_stack([a, np.zeros(len(a))])
+    return a
+
+
+def _v6_colour_args(args: tuple) -> bool:
+    """``append(pos, color[, retain])`` as VPython 6 took it: a second argument that is a
+    colour (three numbers from 0 to 1), a third a number; else VPython 7's
+    ``append(v1, v2, ...)``, several points."""
+    if len(args) not in (2, 3) or (len(args) == 3 and not isinstance(args[2], (int, float))):
+        return False
+    c = args[1]._xyz() if isinstance(args[1], vector) else args[1]
+    return isinstance(c, (list, tuple, np.ndarray)) and len(c) == 3 and all(
+        isinstance(v, (int, float, np.number)) and 0 <= v <= 1 for v in c)
 
 
 def _point(value, constructing: bool) -> dict:
@@ -48,7 +143,7 @@ def _flatten(args: tuple) -> list:
         if isinstance(a, np.ndarray) and a.ndim == 2:       # VPython 6: an N x 3 array
             out.extend(a)
         elif isinstance(a, (list, tuple)) and a and not all(
-                isinstance(c, (int, float)) and not isinstance(c, bool) for c in a):
+                isinstance(c, (int, float, np.number)) and not isinstance(c, bool) for c in a):
             out.extend(a)
         else:
             out.append(a)
@@ -76,9 +171,15 @@ class _PointList(_Base):
         self._origin = vector(0, 0, 0)
         self._size_units = "pixels"
         self._cache = None      # arrays of the first points, kept while only appends happen
+        self._live: dict = {}   # VPython 6's arrays handed out: field -> [array, seen, stamp]
         pos = kwargs.pop("pos", None)
-        if pos is None and is_lenient() and any(c in kwargs for c in "xyz"):
-            pos = _columns(kwargs)               # VPython 6: curve(x=arange(...), y=...)
+        later = {}                               # VPython 6: per-point colours, set once made
+        if is_lenient():
+            if pos is None and any(c in kwargs for c in "xyz"):
+                pos = _columns(kwargs)           # curve(x=arange(...), y=...)
+            if _is_table(kwargs.get("color")):
+                later["color"] = kwargs.pop("color")
+            later.update((c, kwargs.pop(c)) for c in ("red", "green", "blue") if c in kwargs)
         if pos is not None and args:
             raise AttributeError("Malformed constructor")
         for name in ("color", "origin"):
@@ -97,11 +198,12 @@ class _PointList(_Base):
             self.append(pos)
         if args:
             self.append(*args)
+        for name, value in later.items():
+            setattr(self, name, value)
         self._constructing = False
 
     # -- attributes ----------------------------------------------------------------------
 
-    color = Linked(_vec, then="_touch", hook=True)
     radius = Linked(float, then="_touch")
     retain = Linked(int, then="_touch")
     shininess = Linked(float, then="_touch")
@@ -115,12 +217,38 @@ class _PointList(_Base):
         self._version += 1
 
     @property
+    def color(self):
+        """The object's colour (a vector); in VPython 6, every point's, an N x 3 array."""
+        if is_lenient():
+            return self._array("color")
+        return self._color
+
+    @color.setter
+    def color(self, value) -> None:
+        if is_lenient() and _is_table(value):
+            self._set_rows("color", _rows(value, "color"))
+            return
+        value = _vec(value, "color")
+        self._color = value
+        value._on_change = self._touch
+        if is_lenient() and any("color" in p for p in self._pts):
+            for p in self._pts:                  # VPython 6: one colour for every point
+                p.pop("color", None)
+            self._changed()
+        else:
+            self._touch()
+
+    @property
     def pos(self):
+        if is_lenient():
+            return self._array("pos")
         raise AttributeError('object does not have a "pos" attribute')
 
     @pos.setter
     def pos(self, value) -> None:
-        raise AttributeError("use object methods to change its shape")
+        if not is_lenient():
+            raise AttributeError("use object methods to change its shape")
+        self._set_rows("pos", _rows(value, "pos"))
 
     @property
     def npoints(self) -> int:
@@ -140,9 +268,10 @@ class _PointList(_Base):
                     pt[key] = _vec(kwargs[key], key) if key == "color" else kwargs[key]
         return pts
 
-    def _trim(self) -> None:
-        if self._retain > 0 and len(self._pts) > self._retain:
-            k = len(self._pts) - self._retain
+    def _trim(self, retain: int | None = None) -> None:
+        retain = self._retain if retain is None else retain
+        if retain > 0 and len(self._pts) > retain:
+            k = len(self._pts) - retain
             del self._pts[:k]
             if self._cache is not None:
                 count, *arrays = self._cache
@@ -155,10 +284,33 @@ class _PointList(_Base):
         self._touch()
 
     def append(self, *args, **kwargs) -> None:
+        retain = None
+        if is_lenient():
+            args, retain = self._v6_append_args(args, kwargs)
         new = self._parse(args, kwargs)
+        if is_lenient() and self._pts and "color" in self._pts[-1]:
+            for pt in new:                       # VPython 6: the last point's colour goes on
+                pt.setdefault("color", self._pts[-1]["color"])
         self._pts.extend(new)
         self._appended += len(new)
-        self._trim()
+        self._trim(retain)
+
+    def _v6_append_args(self, args: tuple, kwargs: dict) -> tuple[tuple, int | None]:
+        """VPython 6's ``append(pos, color, retain)`` and ``append(pos, red=, green=,
+        blue=, retain=)`` (``arrayprim.cpp``): the point and how many points to keep
+        (0: the new one alone; None: the curve's ``retain``)."""
+        if _v6_colour_args(args):
+            kwargs.update(zip(("color", "retain"), args[1:]))
+            args = args[:1]
+        parts = [(i, kwargs.pop(c)) for i, c in enumerate(("red", "green", "blue")) if c in kwargs]
+        if parts and "color" not in kwargs:
+            rgb = list((self._pts[-1].get("color", self._color) if self._pts
+                        else self._color)._xyz())
+            for i, value in parts:
+                rgb[i] = float(value)
+            kwargs["color"] = vector(*rgb)
+        retain = kwargs.pop("retain", None)
+        return args, None if retain is None or retain < 0 else max(int(retain), 1)
 
     def unshift(self, *args, **kwargs) -> None:
         self._pts[:0] = self._parse(args, kwargs)
@@ -223,6 +375,104 @@ class _PointList(_Base):
         self._pts = []
         self._changed()
 
+    # -- VPython 6's arrays ----------------------------------------------------------------
+
+    def _stamp(self) -> tuple:
+        """What changes whenever the points do (an edit, an append, a drop)."""
+        return self._version, self._appended, len(self._pts)
+
+    def _values(self, field: str) -> np.ndarray:
+        """The points' positions or colours as an (n, 3) array."""
+        c0 = self._color
+        xyz = [p["pos"]._xyz() for p in self._pts] if field == "pos" else \
+            [p.get("color", c0)._xyz() for p in self._pts]
+        return np.array(xyz, dtype=float).reshape(-1, 3)
+
+    def _array(self, field: str) -> LivePoints:
+        """``pos`` or ``color`` as VPython 6 gave it: a live view of the points. The array
+        is kept while the points do not change, and refilled in place while their number
+        stays, so that a view a program holds stays live."""
+        entry, stamp = self._live.get(field), self._stamp()
+        if entry is None or entry[2] != stamp:
+            values = self._values(field)
+            if entry is None or entry[0].shape != values.shape:
+                entry = self._live[field] = [values, values.copy(), stamp]
+            else:                                  # refilled: views held stay live
+                entry[0][...] = entry[1][...] = values
+                entry[2] = stamp
+        view = entry[0].view(LivePoints)
+        view._owner = (self, field, entry[0])
+        return view
+
+    def _array_written(self, field: str, array: np.ndarray) -> None:
+        """A program wrote into a live array: the rows that changed become the points'."""
+        entry = self._live.get(field)
+        if entry is None or entry[0] is not array:
+            return                               # an array since replaced: no longer live
+        changed = np.flatnonzero((array != entry[1]).any(axis=1)[:len(self._pts)])
+        if not changed.size:
+            return
+        current = entry[2] == self._stamp()
+        for k, row in zip(changed.tolist(), array[changed].tolist()):
+            self._pts[k][field] = vector(*row)
+        entry[1][changed] = array[changed]
+        self._changed()
+        if current:
+            entry[2] = self._stamp()
+
+    def _resize(self, n: int) -> None:
+        """VPython 6's ``set_length``: fewer points keep the last ones; more repeat the last
+        point (its colour too), or start at the origin."""
+        pts = self._pts
+        if n == len(pts):
+            return
+        del pts[:max(len(pts) - n, 0)]
+        while len(pts) < n:
+            last = pts[-1] if pts else {"pos": vector(0, 0, 0)}
+            pts.append({k: vector(v) if isinstance(v, vector) else v for k, v in last.items()})
+        self._changed()
+
+    def _same(self, field: str, rows: np.ndarray) -> bool:
+        """The rows are the points already (``c.pos += v`` writes in place, then sets;
+        ``c.pos = c.ends`` each frame): no change to record."""
+        entry = self._live.get(field)
+        held = entry[0] if entry is not None and entry[2] == self._stamp() else None
+        return len(rows) == len(self._pts) and np.array_equal(
+            self._values(field) if held is None else held, rows)
+
+    def _set_rows(self, field: str, rows: np.ndarray) -> None:
+        """``c.pos = array`` or ``c.color = array``: the points, resized to the rows."""
+        if self._same(field, rows):
+            return
+        self._resize(len(rows))
+        for p, row in zip(self._pts, rows.tolist()):
+            p[field] = vector(*row)
+        self._changed()
+
+    def _set_column(self, name: str, value) -> None:
+        """``c.x = array`` (resizing) or ``c.x = number`` (every point's x), and so on."""
+        field, i = _COLUMNS[name]
+        if np.ndim(value) == 0:
+            if field == "color" and not any("color" in p for p in self._pts):
+                xyz = list(self._color._xyz())       # one colour: the object's
+                xyz[i] = float(value)
+                self.color = vector(*xyz)
+                return
+            if not self._pts:
+                self._resize(1)
+        else:
+            value = np.asarray(value, dtype=float)
+            if value.ndim != 1:
+                raise ValueError(f"{name} must be a 1D array.")
+            self._resize(len(value))
+            entry = self._live.get(field)
+            if entry is not None and entry[2] == self._stamp() and \
+                    np.array_equal(entry[0][:, i], value):
+                return                            # c.x *= 2: written in place already
+        rows = self._values(field)
+        rows[:, i] = value
+        self._set_rows(field, rows)
+
     def _arrays(self):
         """Positions (n, 3), colours (n, 3) and radii (n,) of the visible points.
 
@@ -251,6 +501,31 @@ class _PointList(_Base):
         if vis.all():
             return pos, col, rad
         return pos[vis], col[vis], rad[vis]
+
+
+def _column(name: str) -> property:
+    """VPython 6's ``x``, ``y``, ``z`` (columns of ``pos``) and ``red``, ``green``, ``blue``
+    (of ``color``), live views; in VPython 7 a program's own attribute, as before."""
+    field, i = _COLUMNS[name]
+
+    def read(self):
+        if is_lenient():
+            return self._array(field)[:, i]
+        if name in self.__dict__:
+            return self.__dict__[name]
+        raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
+
+    def write(self, value) -> None:
+        if is_lenient():
+            self._set_column(name, value)
+        else:
+            self.__dict__[name] = value
+
+    return property(read, write)
+
+
+for _name in _COLUMNS:
+    setattr(_PointList, _name, _column(_name))
 
 
 class curve(_PointList):

@@ -449,22 +449,32 @@ def _caps(args: dict, d: np.ndarray, plane: np.ndarray, colour: np.ndarray) -> C
                 d[-1] if end_n is None else _unit(np.array(_vec(end_n, "n")._xyz())))
 
 
+# what an extrusion's surface is made from (the rest of its arguments are its placement and look)
+SWEEP_OPTIONS = ("path", "shape", "color", "scale", "xscale", "yscale", "twist", "smooth", "up",
+                 "smooth_joints", "sharp_joints") + _CLOSED_ONLY
+
+
+def extruded(args: dict) -> Surface:
+    """The surface of an extrusion made with ``args`` (the :data:`SWEEP_OPTIONS` are popped)."""
+    if "path" not in args:
+        raise AttributeError("An extrusion must have a path.")
+    if "shape" not in args:
+        raise AttributeError("An extrusion must have a shape.")
+    path = [_vec(v, "path") for v in args.pop("path")]
+    if len(path) < 2:
+        raise AttributeError("The path must have more than one point.")
+    groups = shape_groups(args.pop("shape"))
+    spec, caps, smooth = _sweep_spec(args, path)
+    return sweep(groups, spec, smooth, caps, holes_inward=True)
+
+
 class extrusion(fused):
     """A shape swept along a path, drawn once (VPython's ``extrusion``); see the module."""
 
     def __init__(self, **args) -> None:
-        if "path" not in args:
-            raise AttributeError("An extrusion must have a path.")
-        if "shape" not in args:
-            raise AttributeError("An extrusion must have a shape.")
-        path = [_vec(v, "path") for v in args.pop("path")]
-        if len(path) < 2:
-            raise AttributeError("The path must have more than one point.")
-        groups = shape_groups(args.pop("shape"))
         first = args.get("color", vector(1, 1, 1))
         first = first if isinstance(first, vector) else first[0]
-        spec, caps, smooth = _sweep_spec(args, path)
-        surface = sweep(groups, spec, smooth, caps, holes_inward=True)
+        surface = extruded(args)
         centre, size0 = bounding_size(surface.points)
         self._take(surface, centre, size0)
         self._start(args, size0)

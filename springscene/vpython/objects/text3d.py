@@ -143,6 +143,15 @@ def _lines(text: str, font: str, height: float, align: str) -> tuple[list, float
     return groups, longest
 
 
+def text_groups(text: str, height: float = 1.0, align: str = "left",
+                font: str = "sans") -> list:
+    """The letters of ``text`` as shape groups ``[outline, hole, ...]`` (each contour
+    closed), a lowercase ``h`` ``height`` tall, the first baseline at y = 0: a string
+    given as an extrusion's shape (VPython 6)."""
+    groups, _ = _lines(text, font, height, align)
+    return [[np.vstack([c, c[:1]]) for c in g] for g in groups]
+
+
 def letters(text: str, font: str, height: float, depth: float, align: str, colours: tuple,
             faces: tuple) -> tuple[Surface, float]:
     """The extruded letters, pos at the origin; and VPython's text length (max x) before boxing."""
@@ -365,4 +374,4 @@ class text(fused):
         return new
 
 
-__all__ = ["text", "letters", "outlines", "nest", "font_heights"]
+__all__ = ["text", "letters", "outlines", "nest", "text_groups", "font_heights"]

@@ -359,4 +359,16 @@ def _end(end: dict | None) -> dict | None:
     """The end line's summary (its names and globals are for readers, not the page)."""
     if end is None:
         return None
-    return {k: end.get(k) for k in ("t", "frames", "ended", "error")}
+    return {**{k: end.get(k) for k in ("t", "frames", "ended")},
+            "error": _error_text(end.get("error"))}
+
+
+def _error_text(error: Any) -> str | None:
+    """The program's error as the page shows it under the canvas (as text): its traceback,
+    as Python prints it, and the program time the replay ends at."""
+    if not isinstance(error, dict):
+        return None if error is None else str(error)
+    told = error.get("traceback") or f"{error.get('type', 'Error')}: {error.get('message', '')}"
+    t = error.get("t")
+    return told if not isinstance(t, (int, float)) else (
+        f"{told}\n\n(the program stopped here, at t = {t:.2f} s)")

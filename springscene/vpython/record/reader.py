@@ -4,7 +4,8 @@
 program's own variable names (``rec["ball"]``), each object's attributes as arrays over
 the frames (``rec["ball"].pos`` is ``(frames, 3)``, NaN where the object did not exist
 yet or any more), the state at a time (``rec.at(t)``), what was printed, the graphs'
-points and the program's last global numbers and vectors.
+points, the program's last global numbers and vectors, and the program's error when the
+run ended in one (``rec.error``: its type, message, program time, line and traceback).
 
 An attribute's array over all objects is made the first time any object's is asked for
 (frames x objects x its width), by carrying each frame's changes forward.
@@ -217,6 +218,8 @@ class Recording:
         self.globals: dict[str, Any] = {
             k: (np.asarray(v, dtype=float) if isinstance(v, list) else v)
             for k, v in (self.end or {}).get("globals", {}).items()}
+        # the program's own error the run ended at: type, message, t, line, traceback
+        self.error: dict | None = (self.end or {}).get("error")
 
     def _frame(self, line: dict) -> None:
         f = line["frame"]

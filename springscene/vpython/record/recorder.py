@@ -528,7 +528,8 @@ class Recorder:
 
     def _record_id(self, obj) -> int | None:
         """``obj``'s record id, if it is a recorded object still on its canvas."""
-        return self._ids[id(obj)][0] if self._objs.get(id(obj)) is obj else None
+        found = self._ids.get(id(obj))
+        return found[0] if found is not None and self._objs.get(id(obj)) is obj else None
 
     def names(self, namespace: dict) -> tuple[dict, dict]:
         """The program's global names that hold recorded objects (or lists of them), and

@@ -6,7 +6,9 @@ parent and the request as JSON. It runs :func:`.runner.run_program` into the par
 private folder and tells the parent, one JSON object a line: ``dialect`` (before the
 program runs), ``progress`` (every :data:`PROGRESS_EVERY` s: the program clock, frames,
 ``rate``/``sleep`` calls and the program's line now) and one ending (``done`` with the
-result, or ``program``, ``exit``, ``user``, ``oserror``, ``interrupted``, ``internal``).
+result, or ``program``, ``exit``, ``user``, ``oserror``, ``interrupted``, ``internal``; a
+``program`` error after the first frame carries the result too, its files written up to
+the error).
 Whatever is not said on the pipe (``os._exit``, a signal, a crash) the parent reads from
 the exit status.
 """
@@ -27,7 +29,7 @@ from ...errors import ProgramError, UserError
 from . import lineage
 from ..core import runtime
 from .options import RunOptions
-from .runner import ProgramExit, _user_traceback, run_program
+from .runner import ProgramExit, ProgramRaised, _user_traceback, run_program
 
 PROGRESS_EVERY = 0.25       # seconds of wall clock between progress reports
 
@@ -130,16 +132,25 @@ def _watch_reads(folder: Path) -> set[str]:
     return read
 
 
-def _done(reporter: Reporter, result, read: set[str]) -> None:
-    """The finished result, once the files are complete (the parent moves them)."""
-    reporter.end("done", path=str(result.path), frames=result.frames, fps=result.fps,
-                 read=sorted(read),
-                  program_seconds=result.program_seconds, ended=result.ended,
-                  size=list(result.size) if result.size else None, dialect=result.dialect,
-                  page=str(result.page) if result.page else None,
-                  recording=str(result.recording) if result.recording else None,
-                  images=list(dict.fromkeys(str(p) for p in result.images)),
-                  notes=result.notes)
+def _files(result, read: set[str]) -> dict:
+    """A finished result as the parent reads it, to move its files into place."""
+    return dict(path=str(result.path), frames=result.frames, fps=result.fps,
+                read=sorted(read),
+                program_seconds=result.program_seconds, ended=result.ended,
+                size=list(result.size) if result.size else None, dialect=result.dialect,
+                page=str(result.page) if result.page else None,
+                recording=str(result.recording) if result.recording else None,
+                images=list(dict.fromkeys(str(p) for p in result.images)),
+                notes=result.notes, error=result.error)
+
+
+def _raised(reporter: Reporter, exc: ProgramRaised, read: set[str]) -> None:
+    """The program's own error: its traceback, and its files when the run wrote them up
+    to the error (the parent moves them, then reports the error)."""
+    if exc.result is None:
+        reporter.end("program", message=exc.traceback, error=exc.error)
+    else:
+        reporter.end("program", message=exc.traceback, **_files(exc.result, read))
 
 
 def run(reporter: Reporter, request: dict) -> None:
@@ -155,9 +166,12 @@ def run(reporter: Reporter, request: dict) -> None:
         result = run_program(program, out, options, on_frame=on_frame,
                              on_end=lineage.end_if_copy,
                              on_dialect=lambda d: reporter.send("dialect", name=d.name,
-                                                                dialect_kind=d.kind))
+                                                                dialect_kind=d.kind,
+                                                                notes=list(d.notes)))
     except ProgramExit as exc:
         reporter.end("exit", status=exc.status, said=exc.said, message=str(exc))
+    except ProgramRaised as exc:
+        _raised(reporter, exc, read)
     except ProgramError as exc:
         reporter.end("program", message=str(exc))
     except UserError as exc:
@@ -173,7 +187,7 @@ def run(reporter: Reporter, request: dict) -> None:
     except Exception:                       # a fault in springscene itself
         reporter.end("internal", message=traceback.format_exc().rstrip("\n"))
     else:
-        _done(reporter, result, read)
+        reporter.end("done", **_files(result, read))
 
 
 def main(argv: list[str] | None = None) -> int:

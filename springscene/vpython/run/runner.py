@@ -5,8 +5,10 @@ The program is the user's own code, run in this process as ``__main__`` with
 is promised. Its clock is :mod:`springscene.vpython.core.runtime`'s: frames are taken
 on ``rate`` calls, and the run ends when the program ends or when the video has
 its frames. An exception in the program is reported with the program's own
-traceback (its file and line, springscene's frames left out): :class:`ProgramError`;
-``sys.exit(n)`` is :class:`ProgramExit` with Python's status. ``springscene vpython``
+traceback (its file and line, springscene's frames left out): :class:`ProgramRaised`,
+once the files up to the error are written when it came after the first frame (as
+VPython's page shows the animation up to the error); ``sys.exit(n)`` is
+:class:`ProgramExit` with Python's status. ``springscene vpython``
 runs this in a child process that owns nothing (:mod:`.supervise`, :mod:`.child`).
 """
 
@@ -62,7 +64,7 @@ class ProgramResult:
     fps: int
     program_seconds: float       # the program clock when the run ended
     seconds: float               # wall time
-    ended: str                   # "program" (it ended), "duration" or "frames"
+    ended: str                   # "program" (it ended), "duration", "frames" or "error"
     size: tuple[int, int] | None = None                   # the video's (width, height)
     dialect: str = "VPython 7"                            # what the program was written for
     page: Path | None = None
@@ -70,6 +72,7 @@ class ProgramResult:
     images: list[Path] = field(default_factory=list)      # graphs and scene.capture()s
     notes: list[str] = field(default_factory=list)        # what ran without a user
     peak_memory: int | None = None    # bytes, the run's largest resident set (a supervised run)
+    error: dict | None = None         # the program's error it ended at (ProgramRaised.error)
 
 
 class ProgramExit(ProgramError):
@@ -83,6 +86,44 @@ class ProgramExit(ProgramError):
             self.status, self.said = 1, str(code)
         super().__init__(f"{path}: the program exited with status {self.status}"
                          + (f" ({self.said})" if self.said is not None else ""))
+
+
+class ProgramRaised(ProgramError):
+    """The program raised: ``str()`` is its own traceback, and, when the run's files up to
+    the error were written (``result``, a :class:`ProgramResult` whose ``ended`` is
+    ``"error"``), one line more saying where they end (:func:`ended_at_error`).
+
+    ``error`` is what the recording's end line keeps (docs/recording.md): the exception's
+    ``type`` and ``message``, the program time ``t`` it was raised at, the program's
+    ``line`` and its ``traceback``. A program that raised before its first frame has no
+    ``result``: nothing was written. :func:`springscene.run_vpython` gives the run up to
+    the error as ``run`` (a ``Run``, when there is a recording) and ``video`` (a
+    ``Video``, for a video or still output).
+    """
+
+    def __init__(self, traceback_text: str, error: dict,
+                 result: ProgramResult | None = None) -> None:
+        super().__init__(traceback_text)
+        self.traceback, self.error, self.result = traceback_text, error, result
+        self.run = self.video = None
+
+    def __str__(self) -> str:
+        if self.result is None:
+            return self.traceback
+        return f"{self.traceback}\n{ended_at_error(self.result)}"
+
+
+def ended_at_error(result: ProgramResult) -> str:
+    """The one line after the traceback of a program that raised once its frames had
+    begun: the video (or still, recording, page) ends at the program's error, at its
+    program time; the frame is the last one's index (its time ``frame / fps``)."""
+    at = f"at t = {result.program_seconds:.2f} s"
+    suffix = result.path.suffix.lower()
+    if suffix == ".png":
+        return f"springscene: the picture is the scene at the program's error, {at}"
+    what = {".jsonl": "recording", ".html": "page"}.get(suffix, "video")
+    return (f"springscene: the {what} ends at the program's error, {at} "
+            f"(frame {max(result.frames - 1, 0)})")
 
 
 def _user_traceback(exc: BaseException) -> str:
@@ -122,25 +163,25 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                 on_end: Callable | None = None) -> ProgramResult:
     """Run a VPython program and write its video (MP4, GIF, ...) or final still (PNG).
 
-    A frame is the program's page as VPython lays it out (titles, canvases, captions,
-    graphs: :mod:`..page.film`), or with ``options.canvas_only`` the first canvas alone at
-    its own size. Beside ``out`` go ``<out's name>.html`` (the page VPython would show,
-    with the video), the program's graphs as PNGs, and any ``scene.capture`` PNGs.
-    ``on_frame(index, image)`` is called for each frame taken (for tests);
-    ``on_dialect(dialect)`` once the program's dialect is known, before it runs;
-    ``on_end(error)`` once the program has ended (:class:`.session.ProgramSession`).
+    A frame is the program's page as VPython lays it out (:mod:`..page.film`), or with
+    ``options.canvas_only`` the first canvas alone. Beside ``out`` go its page
+    (``.html``), graphs and ``scene.capture`` PNGs. ``on_frame(index, image)`` is called
+    for each frame (tests), ``on_dialect(dialect)`` before the program runs, ``on_end(error)``
+    once it ended (:class:`.session.ProgramSession`). A program that raises after its
+    first frame has its files written up to the error, the scene at the error their last
+    frame, and raises :class:`ProgramRaised` with them (``result``); before, nothing.
     """
     request = check_request(program, out, options)
     path, out, still = request.program, request.out, request.still
     data_only = out.suffix.lower() in DATA_FORMATS      # the recording (or its page) alone
     code, dialect = _compile(path)
-    if on_dialect is not None:
-        on_dialect(dialect)
     vp.reset()
     graph_images.reset()          # the graph figures of an earlier run in this process
     start = time.perf_counter()
     images: list[Path] = []
     names = _namespace(path, dialect)
+    if on_dialect is not None:    # with its notes: how the program was read
+        on_dialect(dialect)
     # the names the program is given, not its own (VPython 6's star import brings numpy's)
     given = {**(visual6.namespace(vp) if dialect.kind == "vpython6" else {}), **names}
     with contextlib.ExitStack() as files:
@@ -154,28 +195,65 @@ def run_program(program, out, options: RunOptions = RunOptions(), *,
                                     _frame_taker(film, recorder, still, data_only, on_frame))
         # at each of VPython's renders: attached trails and arrows move, autoscale widens
         timeline.on_render = lambda: (attachments.update(), autoscale.at_render())
+        ended, raised = _until_end(film, timeline, lambda: _execute(
+            code, path, dialect, timeline, _capturer(out, film, images), request.limit, film,
+            names, on_end, recorder))
         try:
-            ended = _execute(code, path, dialect, timeline, _capturer(out, film, images),
-                             request.limit, film, names, on_end, recorder)
-        except BaseException:
-            film.close(False)
-            raise
-        attachments.update()      # the render after the program's last step
-        _last_frames(film, recorder, timeline, tmp, still, data_only, ended)
-        frames = (1 if still else recorder.frames if data_only else film.frames)
-        result = ProgramResult(out, frames, options.fps,
-                               timeline.seconds, time.perf_counter() - start, ended,
-                               size=film.writer.size if film.writer is not None else film.size,
-                               dialect=dialect.name)
-        if recorder is not None:
-            _close_recording(recorder, result, options, tmp,
-                             _end(recorder, timeline, ended, names, given))
-        if not data_only:
-            result.images = images + _write_extras(out, result, options.page, still,
-                                                   film.printed.text(), options.canvas_only,
-                                                   recorder)
-    result.notes = ([] if data_only else film.notes) + widgets.notes() + _timing_notes(
-        timeline, options.fps, ended, options.duration) + result.notes
+            result = _finish(film, recorder, timeline, tmp, request, options, ended,
+                             dialect.name, start, images,
+                             lambda: _end(recorder, timeline, ended, names, given, raised))
+        except Exception as failure:      # the program's error still comes first
+            if raised is None:
+                raise
+            raise ProgramRaised(f"{raised.traceback}\nspringscene: nothing written: "
+                                f"{failure}", raised.error) from None
+    result.notes = dialect.notes + ([] if data_only else film.notes) + widgets.notes() + \
+        _timing_notes(timeline, options.fps, ended, options.duration) + result.notes
+    if raised is not None:
+        result.error, raised.result = raised.error, result
+        raise raised
+    return result
+
+
+def _until_end(film: Film, timeline: runtime.Timeline,
+               execute: Callable[[], str]) -> tuple[str, ProgramRaised | None]:
+    """Run the program (``execute``): how it ended, and its error when it raised after its
+    first frame (its files up to the error are still to be written); an error before
+    that, or any other, is raised with the film closed unwritten."""
+    try:
+        return execute(), None
+    except ProgramRaised as exc:
+        exc.error["t"] = timeline.seconds
+        if timeline.frames > 0:
+            return "error", exc
+        film.close(False)
+        raise
+    except BaseException:
+        film.close(False)
+        raise
+
+
+def _finish(film: Film, recorder: Recorder | None, timeline: runtime.Timeline, tmp: Path,
+            request, options: RunOptions, ended: str, dialect: str, start: float,
+            images: list[Path], end: Callable[[], dict]) -> ProgramResult:
+    """The run's files once the program has ended (or raised): the last frames, the
+    recording's end line (``end()``, once its last frame is taken), the graphs and the
+    page."""
+    out, still = request.out, request.still
+    data_only = out.suffix.lower() in DATA_FORMATS
+    attachments.update()      # the render after the program's last step
+    _last_frames(film, recorder, timeline, tmp, still, data_only, ended)
+    frames = (1 if still else recorder.frames if data_only else film.frames)
+    result = ProgramResult(out, frames, options.fps,
+                           timeline.seconds, time.perf_counter() - start, ended,
+                           size=film.writer.size if film.writer is not None else film.size,
+                           dialect=dialect)
+    if recorder is not None:
+        _close_recording(recorder, result, options, tmp, end())
+    if not data_only:
+        result.images = images + _write_extras(out, result, options.page, still,
+                                               film.printed.text(), options.canvas_only,
+                                               recorder)
     return result
 
 
@@ -192,20 +270,23 @@ def _close_recording(recorder: Recorder, result: ProgramResult, options: RunOpti
 def _last_frames(film: Film, recorder: Recorder | None, timeline: runtime.Timeline,
                  tmp: Path, still: bool, data_only: bool, ended: str) -> None:
     """The end of the run's pictures: a still's one picture; a video of a program that
-    never called ``rate`` is its final scene. The recording also keeps the scene as the
-    program left it, when it ended after the last frame (what VPython's page shows then)."""
+    never called ``rate`` is its final scene, and one of a program that raised ends with
+    the scene at its error (the frame after the last one taken: VPython's page shows that
+    scene under the error). The recording also keeps the scene as the program left it,
+    when it ended (or raised) after the last frame (what VPython's page shows then)."""
     try:
         if still:
             picture = film.still()
             write_png(tmp, picture)
             film.size = (picture.shape[1], picture.shape[0])
-        elif film.frames == 0 and not data_only:
-            film.take()
+        elif (film.frames == 0 or ended == "error") and not data_only:
+            film.take()         # (at an error: the scene the program left, one frame more)
+        by_program = ended in ("program", "error")
         if recorder is not None and (recorder.frames == 0 or (
-                ended == "program" and timeline.seconds > (recorder.frames - 1) / recorder.fps)):
+                by_program and timeline.seconds > (recorder.frames - 1) / recorder.fps)):
             autoscale.at_render()         # the browser's renders after the program's end
             # at the program's end; a run stopped by its limit shows the last frame time's scene
-            recorder.take(timeline.seconds if ended == "program"
+            recorder.take(timeline.seconds if by_program
                           else max(timeline.frames - 1, 0) / timeline.fps)
     finally:
         film.close(True)
@@ -266,13 +347,15 @@ def _frame_taker(film: Film, recorder: Recorder | None, still: bool, data_only: 
 
 
 def _end(recorder: Recorder, timeline: runtime.Timeline, ended: str, names: dict,
-         given: dict) -> dict:
+         given: dict, raised: ProgramRaised | None = None) -> dict:
     """The recording's end line (docs/recording.md): the program's own globals, not the
-    names VPython gave it (``given``, the namespace it started with, or ``vpython``'s)."""
+    names VPython gave it (``given``, the namespace it started with, or ``vpython``'s);
+    the program's error, when it ended in one."""
     own = {name: v for name, v in names.items()
            if given.get(name, _NONE) is not v and getattr(vp, name, _NONE) is not v}
     held, values = recorder.names(own)
-    return {"t": timeline.seconds, "frames": recorder.frames, "ended": ended, "error": None,
+    return {"t": timeline.seconds, "frames": recorder.frames, "ended": ended,
+            "error": None if raised is None else raised.error,
             "names": held, "globals": values}
 
 
@@ -329,7 +412,11 @@ def _namespace(path: Path, dialect: compiling.Dialect) -> dict:
     names = {"__name__": "__main__", "__file__": str(path), "__builtins__": __builtins__,
              "input": widgets.program_input}
     if dialect.kind == "glowscript":
-        names.update(glowscript.names(vp), **compiling.HELPERS)
+        names.update(glowscript.names(vp, dialect.version), **compiling.HELPERS)
+    elif dialect.converted:             # a VPython 7 program converted from GlowScript
+        given, note = glowscript.converted_names(vp, dialect.unbound, dialect.converted)
+        names.update(given)
+        dialect.notes.extend([note] if note else [])
     return names
 
 
@@ -347,8 +434,9 @@ def _execute(code: types.CodeType, path: Path, dialect: compiling.Dialect,
 
 def _run(code: types.CodeType, names: dict, path: Path, limit: str) -> str:
     """``exec`` the program; how it ended, or its own error as springscene reports it:
-    :class:`ProgramExit` for ``sys.exit`` with a failure, :class:`ProgramError` with the
-    program's own traceback (one line for a canvas size it cannot have)."""
+    :class:`ProgramExit` for ``sys.exit`` with a failure, :class:`ProgramRaised` with the
+    program's own traceback (a :class:`ProgramError` of one line for a canvas size it
+    cannot have or a capture that cannot be written: nothing is written then)."""
     try:
         exec(code, names)
     except runtime.Stop:
@@ -361,8 +449,17 @@ def _run(code: types.CodeType, names: dict, path: Path, limit: str) -> str:
     except CanvasSizeError as exc:   # one line, at the program's line that set the size
         raise ProgramError(f"springscene: {_program_line(exc)}{exc}") from None
     except BaseException as exc:     # the program's own error, with its own traceback
-        raise ProgramError(_user_traceback(exc)) from None
+        raise _raised(exc) from None
     return "program"
+
+
+def _raised(exc: BaseException) -> ProgramRaised:
+    """The program's own exception as springscene reports it (its program time ``t`` is
+    the clock's, filled in by the run)."""
+    told = _user_traceback(exc)
+    lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__) if not _ours(f.filename)]
+    return ProgramRaised(told, {"type": type(exc).__name__, "message": str(exc), "t": None,
+                                "line": lines[-1] if lines else None, "traceback": told})
 
 
 def _write_extras(out: Path, result: ProgramResult, page: bool, still: bool,

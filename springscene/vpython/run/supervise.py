@@ -9,7 +9,9 @@ the status and the one line):
 
 ============================================  ====================================
 the program ends (or ``sys.exit(0)``)          the files, exit 0
-it raises                                      its own traceback, exit 1
+it raises                                      its own traceback, exit 1 (after its
+                                               first frame, with the files up to the
+                                               error: :class:`.runner.ProgramRaised`)
 ``sys.exit(n)``                                exit n, as Python gives
 ``os._exit(n)`` before the video is finished   exit n (1 for ``os._exit(0)``)
 killed by a signal (a segfault, the OOM        exit 128 + signal
@@ -48,7 +50,7 @@ from typing import Callable
 from ...errors import OutputError, ProgramError, UserError
 from ...outputs import hidden_name
 from .options import RunOptions, check_request
-from .runner import ProgramResult
+from .runner import ProgramRaised, ProgramResult
 from .report import Watch, ended_line, memory_limit, parse_size, peak_of, rss_of
 
 POLL = 0.02                 # s: how often the child's memory and the clock are checked
@@ -203,7 +205,8 @@ def _read(fd: int, state: dict, watch: Watch, on_dialect) -> int | None:
             watch.dialect = message["name"]
             if on_dialect is not None:
                 on_dialect(types.SimpleNamespace(name=message["name"],
-                                                 kind=message["dialect_kind"]))
+                                                 kind=message["dialect_kind"],
+                                                 notes=message.get("notes", [])))
         elif state["report"] is None:
             state["report"] = message
             if message.get("progress", {}).get("started"):
@@ -269,6 +272,10 @@ def _finish(report: dict, watch: Watch, folder: Path, out: Path,
     kind = report.get("kind")
     if kind == "done":
         return _move(report, watch, folder, out, record)
+    if kind == "program" and report.get("error") is not None:    # (files up to the error)
+        raise ProgramRaised(report["message"], report["error"],
+                            _move(report, watch, folder, out, record)
+                            if "frames" in report else None)
     if kind == "program":
         raise ProgramError(report["message"])
     if kind == "user":
@@ -337,7 +344,7 @@ def _move(report: dict, watch: Watch, folder: Path, out: Path,
                          size=tuple(report["size"]) if report["size"] else None,
                          dialect=report["dialect"], page=page, recording=recording,
                          images=images, notes=notes,
-                         peak_memory=watch.peak)
+                         peak_memory=watch.peak, error=report.get("error"))
 
 
 def _beside(source: Path, target: Path) -> Path:
