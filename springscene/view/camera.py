@@ -32,6 +32,8 @@ class View:
         fwd = self.focal_point - self.position
         fwd = fwd / np.linalg.norm(fwd)
         right = np.cross(fwd, self.up)
+        if np.linalg.norm(right) < 1e-12:      # looking along up: x's side, as autoscale takes
+            right = np.cross(fwd, (1.0, 0.0, 0.0))
         right /= np.linalg.norm(right)
         up = np.cross(right, fwd)
         rel = points - self.position

@@ -101,6 +101,9 @@ def agg_figure(width_px: int, height_px: int, dpi: int = DPI, **kwargs):
     from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415  heavy: matplotlib
     from matplotlib.figure import Figure  # noqa: PLC0415  heavy: matplotlib
 
-    fig = Figure(figsize=(width_px / dpi, height_px / dpi), dpi=dpi, **kwargs)
+    # a millionth of a pixel more: matplotlib truncates inches x dpi, and 253 / 100 * 100
+    # is 252.99999999999997 (a graph 253.125 px high made a 252-row picture)
+    fig = Figure(figsize=((width_px + 1e-6) / dpi, (height_px + 1e-6) / dpi), dpi=dpi,
+                 **kwargs)
     FigureCanvasAgg(fig)
     return fig

@@ -54,3 +54,14 @@ def test_view_projects_center_to_middle():
     col, row = v.project([(0, -0.1, 0), (0, 0.1, 0), (0, -0.3, 0)]).T
     assert np.allclose(col, 450)
     assert np.allclose(row, [300, 0, 600])    # range is the half-height at the centre plane
+
+
+def test_a_view_looking_along_up_still_projects():
+    # scene.forward = vector(0, -1, 0) with the default up: a program looking straight down
+    import warnings
+    v = camera.view((0, 0, 0), (0, -1, 0), (0, 1, 0), math.pi / 3, 10.0, 600, 400)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        px = v.project(np.array([[0.0, 0.0, 0.0], [5.0, 0.0, 0.0]]))
+    assert np.isfinite(px).all()
+    assert px[0] == pytest.approx([300, 200]) and px[1][1] < 200      # x is up the picture

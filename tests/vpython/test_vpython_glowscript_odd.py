@@ -399,3 +399,15 @@ def test_a_vpython7_program_not_converted_gets_no_glowscript_names(tmp_path):
     prog = write(tmp_path, "from vpython import *\nscene = display()\n")
     proc = run_cli("vpython", prog, "--out", tmp_path / "x.png")
     assert proc.returncode == 1 and "NameError: name 'display'" in proc.stderr
+
+
+def test_mag_of_an_object_is_undefined_as_in_glowscript():
+    # vectors.js: mag(A) is A.mag; a sphere has none (the corpus's hardSphereGasItv reads it)
+    import springscene.vpython.api as vp
+    from springscene.vpython.dialects import glowscript
+    vp.reset()
+    given = glowscript.names(vp)
+    ball = vp.sphere()
+    assert given["mag"](ball) is None and given["hat"](ball) is None
+    assert given["mag"](vp.vector(3, 4, 0)) == 5 and given["mag2"](vp.vector(3, 4, 0)) == 25
+    assert given["hat"](vp.vector(0, 2, 0)).equals(vp.vector(0, 1, 0))

@@ -190,6 +190,27 @@ def test_autoscaled_axes_follow_the_points_so_far():
     assert lo < -1 and hi > 1 and hi - lo <= 3              # the data, a margin, whole ticks
 
 
+def test_a_constant_that_wobbles_in_its_last_digits_is_drawn_as_a_constant():
+    # 40.9576 give or take a few ulps: a span matplotlib would tick a quadrillion times
+    G.reset()
+    g = G.graph()
+    c = G.gcurve(color=V(1, 0, 0))
+    for i in range(20):
+        c.plot(i, 40.9576 + (i % 3) * 7.1e-15)
+    img = GI.draw(g, 500, 300)
+    lo, hi = GI._figures[(id(g), 500, 300)].panels[0].ax.get_ylim()
+    assert lo < 40.9576 < hi and 0.5 < hi - lo < 2          # widened by about 1 %, as Flot
+    assert count_color(img, (255, 0, 0)) > 200
+
+
+def test_a_graph_of_a_fractional_size_is_drawn_at_whole_pixels():
+    # 0.45 * 562.5 px high (the corpus's hardSphereGasItv): 253 rows, not a broadcast error
+    G.reset()
+    g = G.graph(width=450, height=0.45 * 562.5)
+    G.gcurve(color=V(1, 0, 0), data=[[0, 0], [1, 1]])
+    assert GI.draw(g).shape == (253, 450, 3)
+
+
 def test_draw_bars_dots_and_hidden_series():
     g = G.graph(xmin=0, xmax=10, ymin=0, ymax=10)
     bars = G.gvbars(color=V(0, 0.6, 0), delta=0.8, data=[[i, i] for i in range(1, 9)])

@@ -470,3 +470,26 @@ def test_combin_and_sign():
     with pytest.raises(ValueError, match="Illegal arguments"):
         combin(3, 5)
     assert (sign(3.2), sign(-0.1), sign(0), sign(-0.0), sign(math.nan)) == (1, -1, 0, 0, 0)
+
+
+def test_a_vector_over_zero_is_inf_and_nan_in_vpython6_and_an_error_in_vpython7():
+    v = V.vector(2, -3, 0)
+    with pytest.raises(ZeroDivisionError):
+        v / 0
+    V.set_lenient(True)          # VPython 6's C++ vector divides as IEEE does
+    try:
+        x, y, z = xyz(v / 0.0)
+        assert (x, y) == (math.inf, -math.inf) and math.isnan(z)
+        x, y, _ = xyz(v / -0.0)
+        assert (x, y) == (-math.inf, math.inf)
+    finally:
+        V.set_lenient(False)
+
+
+def test_a_canvas_side_written_as_text_is_taken_as_the_browser_takes_it():
+    import springscene.vpython.api as vp
+    vp.reset()
+    c = vp.canvas(height="500", width=" 320 ")
+    assert (c.width, c.height) == (320, 500)
+    with pytest.raises(ValueError, match="a canvas height must be a number of pixels"):
+        c.height = "500px"

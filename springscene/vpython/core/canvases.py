@@ -71,7 +71,13 @@ def _shown(value) -> str:
 
 
 def _side(cv: "canvas", name: str, value):
-    """``value`` if it is a canvas side springscene can draw: 1 to :data:`MAX_SIDE` px."""
+    """``value`` if it is a canvas side springscene can draw: 1 to :data:`MAX_SIDE` px (a
+    number written as text, ``height="500"``, as the browser takes it)."""
+    if isinstance(value, str):
+        try:
+            value = float(value)
+        except ValueError:
+            pass
     try:
         ok = math.isfinite(value) and 1 <= value < MAX_SIDE + 1
     except TypeError:

@@ -38,6 +38,8 @@ VPython's helpers that turn an object's axis and up (``adjust_up``, ``adjust_axi
 
 from __future__ import annotations
 
+import math
+
 import numbers
 from math import acos, cos, pi, sin, sqrt
 from operator import index as _index
@@ -63,6 +65,14 @@ def set_lenient(flag: bool) -> None:
 
 def is_lenient() -> bool:           # while a VPython 6 program runs
     return _lenient
+
+
+def _ieee_divided(v: "vector", zero: float) -> "vector":
+    """``v / 0`` as VPython 6's C++ divided: each component inf (its sign times the
+    zero's), or nan for a zero component; the program draws on with what it has."""
+    sign = math.copysign(1.0, zero)
+    return vector(*(math.copysign(math.inf, c * sign) if c else math.nan
+                    for c in v._xyz()))
 
 
 def _is_triple(value) -> bool:      # a 2- or 3-sequence of numbers (tuple, list, array)
@@ -312,6 +322,8 @@ class vector:
             if other is None:
                 return NotImplemented
         v = _new(vector)
+        if other == 0 and _lenient:     # VPython 6's C++ vector: IEEE's inf and nan
+            return _ieee_divided(self, other)
         v._x = self._x / other
         v._y = self._y / other
         v._z = self._z / other

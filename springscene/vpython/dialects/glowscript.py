@@ -31,9 +31,10 @@ import random
 import re
 import time
 import types
-from typing import Any
+from typing import Any, Callable
 
 from ..core import runtime, widgets
+from ..core.vectors import vector
 
 _NAN = float("nan")
 
@@ -144,9 +145,23 @@ def names(vp: types.ModuleType, version: str = "3.2") -> dict[str, Any]:
                  console=types.SimpleNamespace(log=print), version=[version, "glowscript"],
                  series=lambda **options: series(vp, **options), wait=None,
                  download=download, sleep=gs_sleep)
+    for name in ("mag", "mag2", "hat"):    # vectors.js: ``A.mag``, undefined where A has none
+        found[name] = _attribute_reader(name, found[name])
     if before(version, "2.3"):       # RapydScript before -NG let JavaScript's through
         found.update(true=True, false=False)
     return found
+
+
+def _attribute_reader(name: str, of_vector: Callable) -> Callable:
+    """GlowScript's ``mag(A)`` (and ``mag2``, ``hat``): ``A``'s attribute of that name, so
+    ``mag(ball)`` of an object is JavaScript's undefined (None), not an error, as a
+    program that reads it and never uses it runs in the browser."""
+    def read(A):
+        if isinstance(A, vector):
+            return of_vector(A)
+        return getattr(A, name, None)
+    read.__name__ = name
+    return read
 
 
 def before(version: str, than: str) -> bool:

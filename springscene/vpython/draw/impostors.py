@@ -141,9 +141,11 @@ class SphereImpostors(Batch):
         self.chunks: list[SphereImpostors] = []
 
     def set_spheres(self, pos: np.ndarray, radius: np.ndarray, rgb: np.ndarray,
-                    style: dict) -> None:
+                    style: dict, area: float = EQUAL_AREA) -> None:
         """The spheres now: centres ``pos`` (M, 3), ``radius`` (M,), ``rgb`` (M, 3) uint8
-        (drawn at the radius of :data:`EQUAL_AREA`), in chunks of :data:`CHUNK`."""
+        (drawn at ``area`` times the radius: that of the circle of their mesh's outline's
+        area, :data:`EQUAL_AREA` for VPython's sphere), in chunks of :data:`CHUNK`."""
+        radius = np.asarray(radius) * area
         starts = range(CHUNK, len(pos), CHUNK)
         while len(self.chunks) < len(starts):
             self.chunks.append(SphereImpostors(self.window, self.key, flush=True))
@@ -157,7 +159,7 @@ class SphereImpostors(Batch):
     def _set_chunk(self, pos, radius, rgb, style: dict) -> None:
         self.empty = False
         pos = np.asarray(pos, dtype=float).reshape(-1, 3)
-        radius = (np.asarray(radius) * EQUAL_AREA).astype(np.float32)  # read as float
+        radius = np.asarray(radius).astype(np.float32)  # read as float
         rgb = np.asarray(rgb, dtype=np.uint8).reshape(-1, 3)
         if self.actor is not None and len(pos) == self.mesh.n_points:
             self.mesh.points[:] = pos
@@ -213,9 +215,9 @@ class SphereBatch(InstancedBatch):
         return self.own_empty
 
     def set_spheres(self, template, template_key, pos, R, size, rgb, style,
-                    small: np.ndarray) -> None:
+                    small: np.ndarray, area: float = EQUAL_AREA) -> None:
         """As :meth:`set_instances`, the spheres where ``small`` drawn as impostors (``R``:
-        the frames of the others only)."""
+        the frames of the others only; ``area``: as :meth:`SphereImpostors.set_spheres`)."""
         big = ~small
         self.own_empty = not big.any()
         if self.own_empty:
@@ -226,7 +228,8 @@ class SphereBatch(InstancedBatch):
             self.set_instances(template, template_key, pos[big], R, size[big], rgb[big],
                                style)
         if small.any():
-            self.impostors.set_spheres(pos[small], size[small, 0] / 2, rgb[small], style)
+            self.impostors.set_spheres(pos[small], size[small, 0] / 2, rgb[small], style,
+                                       area)
         else:
             self.impostors.hide()
         self.signature = ("spheres", template_key, int(small.sum()))

@@ -203,8 +203,9 @@ def arrow_dims(length: float, shaftwidth: float = 0, headwidth: float = 0,
 def _scaled(mesh: Mesh, offset, scale) -> tuple[np.ndarray, np.ndarray]:
     """A template's points and normals under ``p * scale + offset`` (inverse-transpose normals)."""
     scale = np.asarray(scale, dtype=float)
-    points = mesh.points * scale + np.asarray(offset, dtype=float)
-    return points, _unit_rows(mesh.normals / _nonzero(scale))
+    with np.errstate(invalid="ignore"):    # a size not finite (VPython 6's v / 0): not drawn
+        points = mesh.points * scale + np.asarray(offset, dtype=float)
+        return points, _unit_rows(mesh.normals / _nonzero(scale))
 
 
 def arrow(length: float, shaftwidth: float, headwidth: float, headlength: float) -> Mesh:

@@ -28,6 +28,10 @@ from .thinning import thin_line
 
 POINT_SLICES = 8          # simple_sphere: Mesh.makeSphere(0.5, 8)
 POINT_DIAMETER = 20.0     # in units of s = 2 range / width, for radius 0
+# the radius of the circle whose area is that of :func:`point_sphere`'s outline seen from
+# the side (the mean over directions at right angles to its poles, measured: 0.9709): a
+# point drawn as an impostor of this radius covers the pixels its mesh covers
+POINT_EQUAL_AREA = 0.971
 
 
 @functools.cache
@@ -84,6 +88,31 @@ def _rgb(colors: np.ndarray) -> np.ndarray:
     return np.clip(np.rint(np.asarray(colors) * 255), 0, 255).astype(np.uint8)
 
 
+def balls(kind: str, obj, range_: float, width: int):
+    """Centres (n, 3), world diameters (n,) and RGB (n, 3) uint8 of a points object's
+    balls (``kind`` "points", pixel-sized, or "sphere-points", world-sized); None when
+    it has none."""
+    p, col, rad = obj._arrays()
+    if not len(p):
+        return None
+    diam = point_diameters(rad, range_, width) if kind == "points" else 2.0 * rad
+    return p, diam, _rgb(col)
+
+
+def polyline(kind: str, obj, view, range_: float, width: int):
+    """Points (n, 3), RGB (n, 3) uint8 and radii (n,) of a curve drawn for ``view``
+    (``kind`` "lines", radius 0, or "tube"): its points under a pixel apart on screen
+    merged, a thin curve's radii the range's; None with fewer than two points."""
+    p, col, rad = obj._arrays()
+    if len(p) < 2:
+        return None
+    if view is not None:
+        p, col, rad = thin_line((p, col, rad), view)
+    if kind == "lines":
+        rad = thin_radii(rad, range_, width)
+    return p, _rgb(col), rad
+
+
 def mesh(kind: str, obj, view, range_: float, width: int):
     """Points, normals, triangles and RGB (uint8) of one curve or points object drawn for
     ``view`` with the canvas's ``range_``; None when it has nothing to draw.
@@ -92,16 +121,8 @@ def mesh(kind: str, obj, view, range_: float, width: int):
     "lines" (a curve of radius 0) or "tube" (radius > 0). Curves have their points
     under a pixel apart on screen merged first (a trail is thousands of them).
     """
-    p, col, rad = obj._arrays()
     if kind in ("points", "sphere-points"):
-        if not len(p):
-            return None
-        diam = point_diameters(rad, range_, width) if kind == "points" else 2.0 * rad
-        return spheres(p, _rgb(col), diam, point_sphere())
-    if len(p) < 2:
-        return None
-    if view is not None:
-        p, col, rad = thin_line((p, col, rad), view)
-    if kind == "lines":
-        rad = thin_radii(rad, range_, width)
-    return tube(p, _rgb(col), rad)
+        got = balls(kind, obj, range_, width)
+        return None if got is None else spheres(got[0], got[2], got[1], point_sphere())
+    got = polyline(kind, obj, view, range_, width)
+    return None if got is None else tube(*got)

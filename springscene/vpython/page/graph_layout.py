@@ -97,7 +97,10 @@ def _axis_limits(lo: float | None, hi: float | None, fixed_min: Any, fixed_max: 
         if fmax is None:
             hi = 10.0 ** np.ceil(np.log10(hi))
         return lo, hi, 0.0
-    degenerate = hi - lo <= 0
+    # no span, or one below what a float can tell apart at this size (a constant that wobbles
+    # in its last digits): widened as Flot widens none (matplotlib would widen it by 5 %
+    # and tick it at the tiny step: quadrillions of ticks)
+    degenerate = hi - lo <= 1e-12 * max(abs(lo), abs(hi))
     if degenerate:
         widen = 1.0 if hi == 0 else 0.01 * abs(hi)
         if fmin is None:

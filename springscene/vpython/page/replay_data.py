@@ -58,7 +58,8 @@ class _Buffers:
     def add_floats(self, values, rows_of: int = 0) -> int:
         """Append floats; with ``rows_of`` = n each row of n is XORed with the row before
         (as uint32s), so a value that changes little becomes mostly zero bits."""
-        at, a = self.n_floats, np.asarray(values, dtype="<f4")
+        with np.errstate(over="ignore"):        # past float32's 3.4e38: infinite, as drawn
+            at, a = self.n_floats, np.asarray(values, dtype="<f4")
         if rows_of and a.size > rows_of:
             u = a.view("<u4").reshape(-1, rows_of)
             u[1:] ^= u[:-1].copy()
