@@ -211,6 +211,7 @@ def available(render_window) -> bool:
     """The window's OpenGL has what the capsules' shader needs: the impostors' extensions
     (:func:`.impostors.available`) and :data:`EXTENSION`."""
     if not _available:
+        render_window.Initialize()     # (the impostors may have asked another window first)
         _available.append(impostors.available(render_window)
                           and EXTENSION in render_window.ReportCapabilities())
     return _available[0]
