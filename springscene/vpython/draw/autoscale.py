@@ -227,7 +227,9 @@ class Extents:
             if kind == "curve":
                 z = self._curve(o)
             elif kind == "points":
-                z = self._points(o)
+                z = self._points_kept(o)
+                if z is None:
+                    z = self._points(o)
             elif kind in surface_meshes.KINDS:       # VPython 6's faces and convex
                 box = surface_meshes.box(o)
                 z = None if box is None else self._store(o, None, box)
@@ -306,6 +308,14 @@ class Extents:
             p = p @ placed[1].T + placed[0]
         r0 = o._radius
         return np.column_stack([p, [q.get("radius", r0) for q in pts]])
+
+    def _points_kept(self, o):
+        """A points object's zx, zy as kept, when nothing was added or changed since it
+        was measured (a million one-point objects are looked at every render); else None."""
+        if self.seen.get(id(o)) != (o._version, o._appended):
+            return None
+        e = self.entries.get(id(o))
+        return e[3:] if e is not None and e[0] is o else None
 
     def _points(self, o):
         """A points object's largest zx, zy over its points (each one a simple_sphere);
