@@ -276,6 +276,10 @@ def check_text3D(rec):
     assert kinds(rec) == {"compound": 1, "curve": 2, "label": 2, "sphere": 4}   # 3D text
     rise = rec["rise"].points()
     assert len(rise) == 2 and np.linalg.norm(rise[1] - rise[0]) > 0.1
+    count, descent = rec.printed.split()[:2]        # one line's width; the descender
+    assert count == "1" and 0.1 < float(descent) < 0.4
+    span = rec["span"].points()                     # upper_left to upper_right: the width
+    assert np.linalg.norm(span[1] - span[0]) > 2
 
 
 def check_texture_and_lighting(rec):
@@ -428,7 +432,7 @@ EXAMPLES = {
     "orbit": check_orbit,
     "randombox": check_randombox,
     "stars": check_stars,
-    "text3D": (check_text3D, needs("3D text's descent and widths")),
+    "text3D": check_text3D,
     "texture_and_lighting": check_texture_and_lighting,
     "tictacdat": check_tictacdat,
     "toroid": check_toroid,

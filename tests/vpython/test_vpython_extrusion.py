@@ -333,6 +333,10 @@ def test_multiline_text_and_its_corners(vp):
     assert 0.1 < t.descender < 0.4
     t.height = 2                                                       # stretched afterwards
     assert np.ptp(object_mesh(t)[0][:, 1]) == pytest.approx(2 * np.ptp(p[:, 1]))
+    # VPython 6's names: descent, and each line's width (its letters' box), at the new height
+    assert t.descent == t.descender and len(t.widths) == 2
+    one = vp.text(text="hop", height=2)
+    assert one.widths == [pytest.approx(one.length)] and t.widths[0] == pytest.approx(one.length)
 
 
 def test_text_attributes_as_vpython_has_them(vp):

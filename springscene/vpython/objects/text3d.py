@@ -330,6 +330,20 @@ class text(fused):
     lines = property(lambda self: len(self._spec_args["text"].split("\n")))
     descender = property(lambda self: self._descender0 * self.height / self._size0[1])
     vertical_spacing = property(lambda self: LINE_SPACING * self.height)
+    # VPython 6's names (visual_common/primitives.py): the descender, and each line's width
+    descent = property(lambda self: self.descender)
+
+    @property
+    def widths(self) -> list[float]:
+        """Each line's width at the text's height, its letters' box (VPython 6's
+        ``widths``, shapes.py: the line's bounding box)."""
+        font = self._spec_args["font"]
+        k = self.height / font_heights(font)[0]
+        out = []
+        for line in self.text.split("\n"):
+            xs = [c[:, 0] for c in outlines(line, font)[0]]
+            out.append(k * float(np.ptp(np.concatenate(xs))) if xs else 0.0)
+        return out
 
     @property
     def upper_left(self) -> vector:
