@@ -234,8 +234,10 @@ def check_mandelbrot(rec):
                 z, n = z * z + complex(-0.8, 0.156), n + 1
             drawn += 0.1 < n / 40 < 1
     assert drawn > 100
-    dots = [s for s in rec.series if s.kind == "gdots"]
-    assert len(dots) == 1 and len(dots[0].points()) == drawn == rec.globals["drawn"]
+    dots = [s for s in rec.series if s.kind == "gdots"]      # one series a colour plotted
+    assert sum(len(s.points()) for s in dots) == drawn == rec.globals["drawn"]
+    colours = [s.color for s in dots]
+    assert len(dots) > 5 and len(set(colours)) == len(colours)
 
 
 def check_medusa(rec):
@@ -426,8 +428,7 @@ EXAMPLES = {
     "labels": check_labels,
     "lathe": check_lathe,
     "lorenz": check_lorenz,
-    "mandelbrot": (check_mandelbrot, needs("gdots(shape='square', size=) and a colour "
-                                           "per plotted point")),
+    "mandelbrot": check_mandelbrot,
     "medusa": check_medusa,
     "orbit": check_orbit,
     "randombox": check_randombox,

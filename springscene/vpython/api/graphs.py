@@ -404,6 +404,23 @@ class gdots(GraphSeries):
             raise AttributeError(f"gdots shape must be 'round' or 'square', not {shape!r}")
         super().__init__(**args)
         self.shape = shape
+        self._tints: dict[tuple, gdots] = {}
+
+    def plot(self, *args: Any, **kwargs: Any) -> None:
+        """As every series plots; a VPython 6 program may also give each dot its colour
+        (``plot(pos=(x, y), color=c)``, its examples/mandelbrot.py): the dot goes to this
+        series' companion of that colour on the same graph (dots of one colour are drawn
+        together, in the order plotted)."""
+        colour = kwargs.pop("color", None) if is_lenient() else None
+        if colour is None or tuple(rgb_of(colour, "color")) == tuple(rgb_of(self._color,
+                                                                            "color")):
+            return super().plot(*args, **kwargs)
+        key = tuple(rgb_of(colour, "color"))
+        tint = self._tints.get(key)
+        if tint is None:
+            tint = self._tints[key] = gdots(graph=self._graph, color=colour,
+                                            radius=self.radius, shape=self.shape)
+        tint.plot(*args, **kwargs)
 
 
 class gvbars(GraphSeries):
