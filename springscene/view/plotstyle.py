@@ -96,14 +96,19 @@ def panel_style(font_size: float) -> Iterator[None]:
         yield
 
 
+def _inches(px: int, dpi: int) -> float:
+    """``px`` at ``dpi`` in inches, as many pixels again once matplotlib truncates inches x
+    dpi (253 / 100 * 100 is 252.99999999999997: a millionth of a pixel more then; sizes
+    that come back whole, the SVGs' 576 pt among them, stay exactly as they were)."""
+    inches = px / dpi
+    return inches if int(inches * dpi) >= px else (px + 1e-6) / dpi
+
+
 def agg_figure(width_px: int, height_px: int, dpi: int = DPI, **kwargs):
     """An Agg figure of ``width_px`` x ``height_px`` pixels at ``dpi`` (no pyplot)."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: PLC0415  heavy: matplotlib
     from matplotlib.figure import Figure  # noqa: PLC0415  heavy: matplotlib
 
-    # a millionth of a pixel more: matplotlib truncates inches x dpi, and 253 / 100 * 100
-    # is 252.99999999999997 (a graph 253.125 px high made a 252-row picture)
-    fig = Figure(figsize=((width_px + 1e-6) / dpi, (height_px + 1e-6) / dpi), dpi=dpi,
-                 **kwargs)
+    fig = Figure(figsize=(_inches(width_px, dpi), _inches(height_px, dpi)), dpi=dpi, **kwargs)
     FigureCanvasAgg(fig)
     return fig
