@@ -156,11 +156,12 @@ def test_setting_an_array_later_makes_the_surface_again_in_place(vp):
     after = _world_points(e)
     assert np.ptp(after[:, 0]) == pytest.approx(3) and np.ptp(after[:, 1]) == pytest.approx(1)
     assert after[:, 0].mean() == pytest.approx(before[:, 0].mean())   # in the same place
-    e.pos[1][2] = -5                  # in place: drawn at the next setting
+    e._dirty = False                  # drawn
+    e.pos[1][2] = -5                  # in place: seen as a change, drawn anew
+    assert e._dirty and _world_points(e)[:, 2].min() == pytest.approx(-5)
     e.color = vp.color.green          # one colour for every point
     assert e.color.tolist() == [[0, 1, 0]] * 2
-    again = _world_points(e)
-    assert again[:, 2].min() == pytest.approx(-5)
+    assert _world_points(e)[:, 2].min() == pytest.approx(-5)        # (the surface made)
     assert (e._vertex_rgb() == [0, 255, 0]).all()
     e.pos = [(0, 0, 0), (1, 0, 0), (2, 0, 0)]                  # a longer path
     assert e.scale.shape == (3, 2) and e.color.shape == (3, 3)

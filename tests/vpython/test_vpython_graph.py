@@ -446,3 +446,20 @@ def test_page_write_is_atomic(tmp_path, monkeypatch):
         make_page(tmp_path, caption_html="new caption")
     assert (tmp_path / "page.html").read_text(encoding="utf-8") == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["page.html", "run-graph1.png"]
+
+
+def test_vpython6_dots_in_their_own_colours_are_hidden_and_cleared_with_their_series():
+    from springscene.vpython.core.vectors import set_lenient
+    G.reset()
+    set_lenient(True)
+    try:
+        d = G.gdots(color=V(1, 0, 0))
+        d.plot(pos=(0, 0))
+        d.plot(pos=(1, 1), color=(0, 0, 1))
+        blue = d._tints[(0.0, 0.0, 1.0)]
+        d.visible = False
+        assert not blue.visible
+        d.delete()
+        assert blue.shown_count() == 0 == d.shown_count()
+    finally:
+        set_lenient(False)

@@ -418,9 +418,22 @@ class gdots(GraphSeries):
         key = tuple(rgb_of(colour, "color"))
         tint = self._tints.get(key)
         if tint is None:
-            tint = self._tints[key] = gdots(graph=self._graph, color=colour,
+            tint = self._tints[key] = gdots(graph=self._graph, color=colour, visible=self._visible,
                                             radius=self.radius, shape=self.shape)
         tint.plot(*args, **kwargs)
+
+    def delete(self) -> None:
+        """Clear the dots, those plotted in their own colours too."""
+        super().delete()
+        for tint in self._tints.values():
+            tint.delete()
+
+    def _show_tints(self) -> None:
+        for tint in self._tints.values():
+            tint.visible = self._visible
+
+    visible = Linked(bool, then="_show_tints",
+                     doc="Whether the graph shows these dots (those in their own colours too).")
 
 
 class gvbars(GraphSeries):

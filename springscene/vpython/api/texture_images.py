@@ -68,7 +68,7 @@ _kept: dict[str, np.ndarray] = {}
 def keep_picture(image: np.ndarray) -> str:
     """Keep a program's picture (``(h, w, 3)`` uint8, top row first) for the run; the
     source name it is drawn by (the same picture, the same name)."""
-    image = np.ascontiguousarray(image, dtype=np.uint8)
+    image = np.array(image, dtype=np.uint8, order="C")      # a copy: the program's own
     digest = hashlib.sha1(image.tobytes() + str(image.shape).encode()).hexdigest()[:16]
     name = f"{ARRAY_PREFIX}{image.shape[1]}x{image.shape[0]}:{digest}"
     if name not in _kept:

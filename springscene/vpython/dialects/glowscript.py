@@ -190,8 +190,10 @@ def converted_names(vp: types.ModuleType, unbound: set[str],
 
 def _noted_range(*args):
     """Python's ``range``, or for floats GlowScript's, with a note that it was."""
-    if all(isinstance(a, int) for a in args):
-        return range(*args)
+    try:
+        return range(*args)           # whole numbers, numpy's too
+    except TypeError:
+        pass
     widgets.skipped("range() of floats: GlowScript's range, which takes them, as in the "
                     "GlowScript program this was converted from")
     return gs_range(*args)

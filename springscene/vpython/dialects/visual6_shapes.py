@@ -109,6 +109,8 @@ class Polygon:
 
     def boundingBox(self, i: int | None = None) -> tuple[float, float, float, float]:
         """``(xmin, xmax, ymin, ymax)``, the Polygon package's order."""
+        if not self._contours:            # (a shape taken wholly away: none)
+            raise ValueError("an empty Polygon has no bounding box")
         pts = self._contours[i] if i is not None else np.concatenate(self._contours)
         lo, hi = pts.min(axis=0), pts.max(axis=0)
         return float(lo[0]), float(hi[0]), float(lo[1]), float(hi[1])
@@ -395,6 +397,9 @@ _REDRAWN = ("pos", "x", "y", "z", "scale", "xscale", "yscale", "twist", "color",
 class extrusion(_extrusion):
     """VPython 6's ``extrusion(pos=path, shape=...)``: see the module."""
 
+    # its arrays may be changed in place (``e.pos[1] = ...``): a recorder reads it in full
+    _looks_counted = False
+
     def __init__(self, **args: Any) -> None:
         if args.get("shape") is None:
             raise AttributeError("An extrusion must have a shape.")
@@ -428,6 +433,27 @@ class extrusion(_extrusion):
                 "shape": _shape_groups(v6["shape"]), "xscale": list(scale[:, 0]),
                 "yscale": list(scale[:, 1]), "twist": list(twist),
                 "color": vector(*colours[0]) if one else [vector(*c) for c in colours]}
+
+    # changed since drawn: set so, or its arrays changed in place (then made again)
+    def _arrays_sum(self) -> int | None:
+        v6 = self.__dict__.get("_v6")
+        if v6 is None:
+            return None
+        return hash(b"".join(np.ascontiguousarray(v6[k]).tobytes()
+                             for k in ("pos", "scale", "twist", "color")))
+
+    @property
+    def _dirty(self) -> bool:
+        if self._arrays_sum() != self.__dict__.get("_drawn_sum"):
+            self.__dict__["_stale"] = True
+            return True
+        return self.__dict__.get("_changed", True)
+
+    @_dirty.setter
+    def _dirty(self, value: bool) -> None:
+        self.__dict__["_changed"] = bool(value)
+        if not value:
+            self.__dict__["_drawn_sum"] = self._arrays_sum()
 
     # the surface, made again (in the first one's place and size) when it was changed
     @property

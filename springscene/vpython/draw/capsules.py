@@ -42,7 +42,7 @@ import numpy as np
 
 from .batches import Batch
 from . import impostors
-from .impostors import _DECLARE
+from .impostors import DECLARE
 from .materials import shade_as_glowscript
 from ..geometry.meshes import CURVE_SIDES
 
@@ -332,7 +332,7 @@ class CapsuleBatch(Batch):
         for original, replacement in VS_RULES:
             shader.AddVertexShaderReplacement(original, False, replacement, False)
         shader.AddFragmentShaderReplacement(
-            *_DECLARE[:1], True, _DECLARE[1] + f"#extension {EXTENSION} : require\n", False)
+            *DECLARE[:1], True, DECLARE[1] + f"#extension {EXTENSION} : require\n", False)
         for original, replacement in FS_RULES:
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
 

@@ -60,8 +60,9 @@ MAX_SLICES = 16        # spheres drawn with this many slices or fewer become imp
 # not 30 MB (the same pixels: opaque spheres, the same order, the depth test decides)
 CHUNK = 8192
 EXTENSIONS = ("GL_ARB_gpu_shader5", "GL_ARB_sample_shading")
-_DECLARE = ("//VTK::System::Dec",
-            "//VTK::System::Dec\n" + "".join(f"#extension {e} : require\n" for e in EXTENSIONS))
+# the extensions declared in a shader (the capsules' too)
+DECLARE = ("//VTK::System::Dec",
+           "//VTK::System::Dec\n" + "".join(f"#extension {e} : require\n" for e in EXTENSIONS))
 # in vtkOpenGLSphereMapper's fragment shader (VTK 9.5), after the pixel's ray is cast:
 # b and d are the quadratic's terms for the pixel's centre; the samples' rays are cast
 # again from their own positions on the impostor's triangle
@@ -195,7 +196,7 @@ class SphereImpostors(Batch):
     def _shade(self) -> None:
         shade_as_glowscript(self.actor, False)
         shader = self.actor.GetShaderProperty()
-        shader.AddFragmentShaderReplacement(*_DECLARE[:1], True, _DECLARE[1], False)
+        shader.AddFragmentShaderReplacement(*DECLARE[:1], True, DECLARE[1], False)
         for original, replacement in COVERAGE_RULES:
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
 

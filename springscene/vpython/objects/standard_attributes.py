@@ -90,6 +90,9 @@ class standard(_Base):
     _default_size = (1.0, 1.0, 1.0)
     _axis_sets_size = True          # sphere and ring keep their size when axis changes
     _compact = False                # vectors shared with equal ones once made (:func:`compact`)
+    # every change but the position counted in ``_looks`` (:meth:`_touch`): a recorder may
+    # read the position alone while that count stands (False where that does not hold)
+    _looks_counted = True
 
     # the defaults (vpython.py ``standardAttributes``), stored on an object once set
     _trail_color = None

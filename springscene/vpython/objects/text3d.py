@@ -173,6 +173,8 @@ def letters(text: str, font: str, height: float, depth: float, align: str, colou
 class text(fused):
     """VPython's 3D text; see the module."""
 
+    _looks_counted = False     # its facing turns with the camera: a recorder reads it all
+
     _READ_ONLY = ("text", "font", "align", "billboard", "descender", "start_face_color",
                   "end_face_color", "show_start_face", "show_end_face", "start", "end",
                   "upper_left", "upper_right", "lower_left", "lower_right", "vertical_spacing",

@@ -30,8 +30,6 @@ from ..api.graphs import GraphSeries, graph, graphs
 from ..core.canvases import canvases
 from ..core.vectors import vector
 from ..objects import frames
-from ..objects.standard_attributes import standard
-from ..objects.text3d import text
 from .fields import POINT_KINDS, Schema, schema_of
 
 __all__ = ["Recorder", "FORMAT", "VERSION", "json_value"]
@@ -150,9 +148,10 @@ class _Group:
         self.getters = [operator.attrgetter(f.store) for f in table.schema.other]
         self.others: list[list | None] = [None] * len(table.schema.other)
         # read position apart (:meth:`_KindTable.read`): objects that count their other
-        # changes (``_looks``, every solid but 3D text, whose facing turns with the camera)
+        # changes (``_looks_counted``: every solid but 3D text, whose facing turns with the
+        # camera, and VPython 6's extrusion, whose arrays change in place)
         self.apart = table.pos_cols is not None and all(
-            issubclass(t, standard) and not issubclass(t, text) for t in set(map(type, objs)))
+            getattr(t, "_looks_counted", False) for t in set(map(type, objs)))
         self.looks: np.ndarray | None = None       # each object's ``_looks`` as last read
 
 
