@@ -37,7 +37,7 @@ from __future__ import annotations
 
 import math
 from numbers import Real
-from typing import Any, Iterable
+from typing import Any, Callable, Iterable
 
 import numpy as np
 import shapely
@@ -238,11 +238,13 @@ def as_polygon(value) -> Polygon:
     return out
 
 
-class PolygonShapes:
-    """``shapes`` as VPython 6 gave it: each figure (``shapes.circle(...)``) a :class:`Polygon`."""
+class Figures:
+    """A figure library as VPython 6 gave it: each figure of ``outlines`` (VPython 7's
+    ``shapes`` or ``paths``) made, then given as ``wrap`` makes it (``shapes.circle(...)``
+    a :class:`Polygon`, ``paths.arc(...)`` a :class:`PathPoints`)."""
 
-    def __init__(self, outlines: Any) -> None:
-        self._outlines = outlines
+    def __init__(self, outlines: Any, wrap: Callable[[Any, dict], Any]) -> None:
+        self._outlines, self._wrap = outlines, wrap
 
     def __getattr__(self, name: str):
         if name.startswith("_"):
@@ -251,8 +253,8 @@ class PolygonShapes:
         if not callable(made):
             return made
 
-        def figure(*args: Any, **kwargs: Any) -> Polygon:
-            return as_polygon(made(*args, **kwargs))
+        def figure(*args: Any, **kwargs: Any):
+            return self._wrap(made(*args, **kwargs), kwargs)
         figure.__name__ = name
         figure.__doc__ = getattr(made, "__doc__", None)
         return figure
@@ -271,24 +273,14 @@ class PathPoints(list):
         return list(self)
 
 
-class PathFigures:
-    """``paths`` as VPython 6 gave it: each figure (``paths.arc(...)``) a :class:`PathPoints`."""
+def PolygonShapes(outlines: Any) -> Figures:
+    """``shapes`` as VPython 6 gave it: each figure a :class:`Polygon`."""
+    return Figures(outlines, lambda made, kwargs: as_polygon(made))
 
-    def __init__(self, outlines: Any) -> None:
-        self._outlines = outlines
 
-    def __getattr__(self, name: str):
-        if name.startswith("_"):
-            raise AttributeError(name)
-        made = getattr(self._outlines, name)
-        if not callable(made):
-            return made
-
-        def figure(*args: Any, **kwargs: Any) -> PathPoints:
-            return PathPoints(made(*args, **kwargs), kwargs.get("up", (0, 1, 0)))
-        figure.__name__ = name
-        figure.__doc__ = getattr(made, "__doc__", None)
-        return figure
+def PathFigures(outlines: Any) -> Figures:
+    """``paths`` as VPython 6 gave it: each figure a :class:`PathPoints` in its plane."""
+    return Figures(outlines, lambda made, kwargs: PathPoints(made, kwargs.get("up", (0, 1, 0))))
 
 
 # -- extrusion ----------------------------------------------------------------------------------
@@ -394,6 +386,14 @@ _REDRAWN = ("pos", "x", "y", "z", "scale", "xscale", "yscale", "twist", "color",
             "initial_twist", "start", "end")
 
 
+def _kept(key: str, column: int | None = None) -> property:
+    """A VPython 6 extrusion's kept array ``key`` (or one ``column`` of it), read live; a
+    write goes through the class's ``__setattr__``, which makes the surface again."""
+    if column is None:
+        return property(lambda self: self._v6[key])
+    return property(lambda self: self._v6[key][:, column])
+
+
 class extrusion(_extrusion):
     """VPython 6's ``extrusion(pos=path, shape=...)``: see the module."""
 
@@ -467,46 +467,12 @@ class extrusion(_extrusion):
     def _mesh(self, mesh) -> None:
         self.__dict__["_made_mesh"] = mesh
 
-    # the per-point arrays, as VPython 6 kept them
-    @property
-    def pos(self) -> np.ndarray:
-        return self._v6["pos"]
-
-    @property
-    def x(self) -> np.ndarray:
-        return self._v6["pos"][:, 0]
-
-    @property
-    def y(self) -> np.ndarray:
-        return self._v6["pos"][:, 1]
-
-    @property
-    def z(self) -> np.ndarray:
-        return self._v6["pos"][:, 2]
-
-    @property
-    def scale(self) -> np.ndarray:
-        return self._v6["scale"]
-
-    @property
-    def xscale(self) -> np.ndarray:
-        return self._v6["scale"][:, 0]
-
-    @property
-    def yscale(self) -> np.ndarray:
-        return self._v6["scale"][:, 1]
-
-    @property
-    def twist(self) -> np.ndarray:
-        return self._v6["twist"]
-
-    @property
-    def color(self) -> np.ndarray:
-        return self._v6["color"]
-
-    @property
-    def shape(self):
-        return self._v6["shape"]
+    # the per-point arrays (and the shape), as VPython 6 kept them: live, so a program may
+    # change them in place (seen by :attr:`_dirty`'s checksum)
+    pos, scale, twist, color, shape = (_kept(k) for k in ("pos", "scale", "twist", "color",
+                                                            "shape"))
+    x, y, z = _kept("pos", 0), _kept("pos", 1), _kept("pos", 2)
+    xscale, yscale = _kept("scale", 0), _kept("scale", 1)
 
     def __setattr__(self, name: str, value) -> None:
         if "_v6" not in self.__dict__ or name.startswith("_"):
