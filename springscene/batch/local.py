@@ -28,6 +28,8 @@ class _Pool:
         self.lock = threading.Lock()
         self.running: set[subprocess.Popen] = set()
         self.stopped = threading.Event()
+        self.finished = threading.Event()       # every worker has returned
+        self.workers = 0
         self.errors: list[BaseException] = []
 
     def next(self):
@@ -42,6 +44,15 @@ class _Pool:
 
     def work(self, done: Callable) -> None:
         """Run programs until none is left or the batch stops."""
+        try:
+            self._work(done)
+        finally:
+            with self.lock:
+                self.workers -= 1
+                if not self.workers:
+                    self.finished.set()
+
+    def _work(self, done: Callable) -> None:
         while (item := self.next()) is not None:
             with self.lock:
                 if self.stopped.is_set():
@@ -67,19 +78,21 @@ def run_local(items: list, jobs: int, done: Callable, env: dict | None = None) -
     once each has ended, in the thread that waited for it; ``item.discard()`` for one
     stopped part way."""
     pool = _Pool(items, env)
-    threads = [threading.Thread(target=pool.work, args=(done,), daemon=True,
-                                name=f"springscene-batch-{n}")
-               for n in range(max(1, min(jobs, len(items))))]
-    for thread in threads:
-        thread.start()
+    if not items:
+        return
+    pool.workers = max(1, min(jobs, len(items)))
+    for n in range(pool.workers):
+        threading.Thread(target=pool.work, args=(done,), daemon=True,
+                         name=f"springscene-batch-{n}").start()
+    # waited for on an event, never by Thread.join: a KeyboardInterrupt in join can leave
+    # a running thread taken for ended (Python before 3.13)
     try:
-        for thread in threads:
-            while thread.is_alive():
-                thread.join(POLL)
+        while not pool.finished.wait(POLL):
+            pass
     except BaseException:
         pool.stop_all()
-        for thread in threads:
-            thread.join()
+        while not pool.finished.wait(POLL):
+            pass
         raise
     if pool.errors:
         raise pool.errors[0]
