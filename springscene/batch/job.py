@@ -43,9 +43,10 @@ THUMBNAIL = "thumbnail.png"
 THUMBNAIL_WIDTH = 320               # px: the index's cards
 _ROOT = str(Path(__file__).resolve().parents[2])      # where springscene is
 _WHERE = re.compile(r"at ([-+.\deE]+) s of program time \((\d+) frame")
-_STOPPED = re.compile(r"(stopped by --timeout \S+ s|stopped: it used \S+ of memory, over "
-                      r"--max-memory [^\s,]+|the program was killed by [^(]*?\S(?= \(| at| before)"
-                      r"|the program exited with status \d+)")
+# what a supervisor's line says of how the run was stopped, the same wherever it ran (not
+# the memory used when it was stopped, which varies)
+_STOPPED = re.compile(r"(stopped by --timeout \S+ s|over --max-memory [^\s,]+|the program was "
+                      r"killed by [^(]*?\S(?= \(| at| before)|the program exited with status \d+)")
 
 
 def request(program: Path, folder: Path, stem: str, *, suffix: str, options: RunOptions,
@@ -187,7 +188,8 @@ def _ended(exc: RunEnded, program: Path) -> dict:
     return {"frames": int(where[2]) if where else 0,
             "program_seconds": float(where[1]) if where else None, "ended": None,
             "dialect": None, "peak_memory": None, "status": status,
-            "detail": stopped[1] if stopped else _local(line.split(": ", 2)[-1], program)}
+            "detail": (f"stopped: {stopped[1]}" if status == "memory" else stopped[1])
+            if stopped else _local(line.split(": ", 2)[-1], program)}
 
 
 def _thumbnail(video: Path, out: Path) -> None:

@@ -1,0 +1,239 @@
+"""``springscene batch``: a class's programs to videos, rows and one index page.
+
+A class of four tiny programs (tests/vpython_programs/batch_*.py), one a student: alice's
+runs, bob's raises, carol's hangs (no ``rate``) past ``--timeout`` and dave's blows up
+past ``--max-memory``. Each runs in its own processes, two at a time; the rows, videos,
+thumbnails and the index say what each did, and no program's end touches another's
+files. Reruns skip what is done; Ctrl-C keeps what finished; bad input writes nothing; a
+real Dask ``LocalCluster`` of two workers gives the same rows and byte-identical videos.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pytest
+from PIL import Image
+
+from conftest import ROOT, run_cli
+from springscene.video import count_frames
+
+PROGRAMS = ROOT / "tests" / "vpython_programs"
+CLASS = {"alice": "batch_fine.py", "bob": "batch_raises.py", "carol": "batch_hangs.py",
+         "dave": "batch_hog.py"}
+FLAGS = ["--duration", "0.5", "--fps", "25", "--timeout", "20", "--max-memory", "600M"]
+TIMES = ("wall_seconds", "peak_memory")        # what differs from run to run
+
+
+def make_class(folder: Path, names=tuple(CLASS)) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    for name in names:
+        shutil.copy(PROGRAMS / CLASS[name], folder / f"{name}.py")
+    return folder
+
+
+@pytest.fixture(scope="module")
+def ran(tmp_path_factory):
+    """The class run once, two at a time (a program a student: a folder of .py files)."""
+    base = tmp_path_factory.mktemp("batch")
+    programs, out = make_class(base / "class"), base / "out"
+    start = time.monotonic()
+    proc = run_cli("batch", programs, "--out-dir", out, "--jobs", "2", *FLAGS, "--no-sandbox")
+    return proc, out, programs, time.monotonic() - start
+
+
+def rows_of(out: Path) -> dict[str, dict]:
+    return {row["name"]: row for row in json.loads((out / "summary.json").read_text())["rows"]}
+
+
+def test_each_program_has_its_row(ran):
+    proc, out, programs, _ = ran
+    assert proc.returncode == 0, proc.stderr
+    rows = rows_of(out)
+    assert sorted(rows) == ["alice", "bob", "carol", "dave"]
+    assert rows["alice"]["status"] == "ran" and rows["alice"]["detail"] == ""
+    assert rows["alice"]["frames"] == 12              # 0.5 s at 25 frames/s (12.5, rounded)
+    assert 0.44 <= rows["alice"]["program_seconds"] <= 0.5
+    assert rows["bob"]["status"] == "error"
+    assert rows["bob"]["detail"] == "ZeroDivisionError: float division by zero (line 12)"
+    assert rows["bob"]["program_seconds"] == pytest.approx(0.22) and rows["bob"]["frames"] == 7
+    assert rows["carol"]["status"] == "timeout"
+    assert rows["carol"]["detail"] == "stopped by --timeout 20 s"
+    assert rows["dave"]["status"] == "memory"
+    assert rows["dave"]["detail"] == "stopped: over --max-memory 600M"
+    assert rows["dave"]["program_seconds"] == pytest.approx(0.12)
+    for name, row in rows.items():
+        assert row["program"] == str(programs / f"{name}.py")
+        assert row["wall_seconds"] > 0
+    assert "wrote" in proc.stdout and "4 programs (1 error, 1 memory, 1 ran, 1 timeout)" \
+        in proc.stdout
+
+
+def test_the_videos_and_thumbnails_are_there_and_only_theirs(ran):
+    _, out, _, _ = ran
+    assert count_frames(out / "alice" / "alice.mp4") == 12
+    assert count_frames(out / "bob" / "bob.mp4") == 7            # up to the error
+    for name in ("alice", "bob"):
+        assert (out / name / f"{name}.html").stat().st_size > 10_000       # the player page
+        assert (out / name / f"{name}.jsonl.gz").is_file()
+    assert sorted(p.name for p in (out / "carol").iterdir()) == ["log.txt", "result.json"]
+    assert sorted(p.name for p in (out / "dave").iterdir()) == ["log.txt", "result.json"]
+    thumb = np.asarray(Image.open(out / "alice" / "thumbnail.png").convert("RGB")).astype(int)
+    assert 240 <= thumb.shape[1] <= 320               # the page's width, at most 320 px
+    orange = (thumb[..., 0] > 180) & (thumb[..., 1] > 60) & (thumb[..., 1] < 190) & \
+        (thumb[..., 2] < 80)
+    assert orange.sum() > 200                         # the ball, where the video ends
+    assert "the ball ended at" not in (out / "alice" / "log.txt").read_text()   # (t < 5)
+    assert "ZeroDivisionError" in (out / "bob" / "log.txt").read_text()
+    assert "--timeout" in (out / "carol" / "log.txt").read_text()
+    assert not [p for p in out.rglob(".*")]           # no staging folder left behind
+
+
+def test_the_summaries_hold_the_same_rows(ran):
+    _, out, _, _ = ran
+    rows = rows_of(out)
+    table = list(csv.DictReader(io.StringIO((out / "summary.csv").read_text())))
+    assert [r["name"] for r in table] == sorted(rows)
+    for r in table:
+        assert r["status"] == rows[r["name"]]["status"]
+        assert r["detail"] == rows[r["name"]]["detail"]
+        assert float(r["wall_seconds"]) == rows[r["name"]]["wall_seconds"]
+
+
+def test_the_index_shows_every_program_and_links_what_exists(ran):
+    _, out, _, _ = ran
+    page = (out / "index.html").read_text()
+    assert "4 of 4 programs" in page
+    for name, status in (("alice", "ran"), ("bob", "error"), ("carol", "timeout"),
+                         ("dave", "memory")):
+        card = page[page.index(f'id="{name}"'):].split('<div class="card"', 1)[0]
+        assert f">{status}</span>" in card
+    assert "ZeroDivisionError: float division by zero (line 12)" in page
+    links = re.findall(r'(?:href|src)="([^"#]+)"', page)
+    assert "alice/alice.html" in links and "alice/thumbnail.png" in links
+    assert "bob/bob.mp4" in links and "carol/log.txt" in links
+    assert not [link for link in links if not (out / link).is_file()]
+
+
+def test_a_rerun_skips_what_is_done_and_force_runs_again(tmp_path):
+    programs, out = make_class(tmp_path / "class", ["alice"]), tmp_path / "out"
+    first = run_cli("batch", programs, "--out-dir", out, *FLAGS, "--no-sandbox")
+    assert first.returncode == 0, first.stderr
+    made = (out / "alice" / "result.json").stat().st_mtime_ns
+    again = run_cli("batch", programs, "--out-dir", out, *FLAGS, "--no-sandbox")
+    assert again.returncode == 0 and "1 of 1 programs done before" in again.stderr
+    assert (out / "alice" / "result.json").stat().st_mtime_ns == made
+    assert rows_of(out)["alice"]["status"] == "ran"
+    longer = run_cli("batch", programs, "--out-dir", out, *FLAGS[2:], "--duration", "0.3",
+                     "--no-sandbox")                  # asked otherwise: run again
+    assert longer.returncode == 0 and rows_of(out)["alice"]["frames"] == 8    # 0.3 s
+    forced = run_cli("batch", programs, "--out-dir", out, *FLAGS[2:], "--duration", "0.3",
+                     "--no-sandbox", "--force")
+    assert forced.returncode == 0 and "done before" not in forced.stderr
+    assert (out / "alice" / "result.json").stat().st_mtime_ns > made
+
+
+def test_ctrl_c_keeps_what_finished_and_a_valid_index(tmp_path):
+    programs = make_class(tmp_path / "class", ["alice", "carol"])
+    out = tmp_path / "out"
+    proc = subprocess.Popen([str(Path(sys.executable).parent / "springscene"), "batch",
+                             str(programs), "--out-dir", str(out), "--jobs", "2", *FLAGS[:4],
+                             "--timeout", "120", "--no-sandbox"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 120
+    while not (out / "alice" / "result.json").exists() and time.monotonic() < deadline:
+        time.sleep(0.2)
+    time.sleep(1)                    # carol is running (it never ends by itself)
+    proc.send_signal(signal.SIGINT)
+    stdout, stderr = proc.communicate(timeout=60)
+    assert proc.returncode == 130, stderr
+    assert stderr.strip().splitlines()[-1] == "springscene: interrupted (SIGINT)"
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["programs"] == 2 and summary["done"] == 1
+    assert [row["name"] for row in summary["rows"]] == ["alice"]
+    assert count_frames(out / "alice" / "alice.mp4") == 12
+    assert sorted(p.name for p in out.iterdir()) == ["alice", "index.html", "summary.csv",
+                                                     "summary.json"]
+    assert not _running(programs / "carol.py")
+
+
+def _running(program: Path) -> list[int]:
+    """The processes whose command line names ``program``."""
+    found = []
+    for proc in Path("/proc").iterdir():
+        try:
+            if str(program).encode() in (proc / "cmdline").read_bytes():
+                found.append(int(proc.name))
+        except (OSError, ValueError):
+            pass
+    return found
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--out-dir", "{out}"], "the following arguments are required: PROGRAM"),
+    (["{tmp}/nothere.py", "--out-dir", "{out}"], "nothere.py: no such file or folder"),
+    (["{tmp}/empty", "--out-dir", "{out}"], "empty: no VPython program in this folder"),
+    (["{tmp}/class", "--out-dir", "{out}", "--fps", "0"], "--fps 0: must be a whole number"),
+    (["{tmp}/class", "--out-dir", "{out}", "--jobs", "0"], "--jobs 0: must be at least 1"),
+    (["{tmp}/class", "--out-dir", "{out}", "--timeout", "-1"], "--timeout -1: must be"),
+    (["{tmp}/class", "--out-dir", "{out}", "--max-memory", "lots"], "--max-memory lots"),
+    (["{tmp}/class", "--out-dir", "{out}", "--duration", "0"], "--duration 0: must be"),
+    (["{tmp}/class", "--out-dir", "{tmp}/afile/out"], "--out-dir {tmp}/afile/out: cannot make"),
+    (["{tmp}/class", "{tmp}/other/alice.py", "--out-dir", "{out}"], "two programs named 'alice'"),
+    (["{tmp}/class", "--out-dir", "{out}", "--tests", "{tmp}/grading.py"], "--tests"),
+])
+def test_bad_input_is_one_line_exit_2_and_nothing_written(cli, tmp_path, args, message):
+    make_class(tmp_path / "class", ["alice"])
+    make_class(tmp_path / "other", ["alice"])
+    (tmp_path / "empty").mkdir()
+    (tmp_path / "afile").write_text("not a folder")
+    fill = {"tmp": tmp_path, "out": tmp_path / "out"}
+    proc = cli("batch", *[a.format(**fill) for a in args])
+    assert proc.returncode == 2
+    assert len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert proc.stderr.startswith("springscene: error: ")
+    assert message.format(**fill) in proc.stderr
+    assert not (tmp_path / "out").exists()
+
+
+def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
+    """Through a real Dask LocalCluster of two workers: the program's bytes go to a
+    worker, its files come back into DIR as from the local run."""
+    distributed = pytest.importorskip("distributed")
+    _, local, _, _ = ran
+    programs = make_class(tmp_path / "class", ["alice", "bob", "dave"])
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", *FLAGS,
+                       "--no-sandbox", "--scheduler", cluster.scheduler_address)
+    assert proc.returncode == 0, proc.stderr
+    remote, here = rows_of(tmp_path / "out"), rows_of(local)
+    assert sorted(remote) == ["alice", "bob", "dave"]
+    for name, row in remote.items():
+        same = {k: v for k, v in here[name].items() if k not in TIMES + ("program",)}
+        assert {k: v for k, v in row.items() if k not in TIMES + ("program",)} == same
+    # (bob's page shows his traceback, which names where the program was: not the same)
+    for file in ("alice/alice.mp4", "alice/alice.html", "alice/thumbnail.png", "bob/bob.mp4",
+                 "bob/thumbnail.png"):
+        assert (tmp_path / "out" / file).read_bytes() == (local / file).read_bytes(), file
+
+
+def test_llvmpipe_threads_are_shared_among_the_jobs(monkeypatch):
+    from springscene.batch.runs import job_environment
+    monkeypatch.delenv("LP_NUM_THREADS", raising=False)
+    monkeypatch.setattr(os, "cpu_count", lambda: 8)
+    assert job_environment(2)["LP_NUM_THREADS"] == "4"
+    assert job_environment(16)["LP_NUM_THREADS"] == "1"
+    monkeypatch.setenv("LP_NUM_THREADS", "3")
+    assert job_environment(2) is None                 # the user's own choice kept
