@@ -84,33 +84,37 @@ def _receive(item, result: dict) -> None:
         path.write_bytes(content)
 
 
-def run_cluster(address: str, items: list, done: Callable, tests: Path | None = None) -> None:
-    """Run each item's job on the cluster at ``address``; ``done(item, status)`` as each
-    comes back."""
+def connect(address: str):
+    """A client of the Dask cluster at ``address`` (bad input if there is none)."""
     try:
-        from distributed import Client, as_completed  # noqa: PLC0415  heavy: distributed (springscene[dask])
+        from distributed import Client  # noqa: PLC0415  heavy: distributed (springscene[dask])
     except ImportError:
         raise UserError("--scheduler: Dask's distributed is not installed (pip install "
                         "'springscene[dask]')") from None
     try:
-        client = Client(address, timeout="10s")
+        return Client(address, timeout="10s")
     except (OSError, TimeoutError, ValueError) as exc:
         raise UserError(f"--scheduler {address}: cannot reach it ({exc})") from None
-    with client:
-        futures = {client.submit(run_remote, payload(item, tests), pure=False,
-                                 key=f"springscene-batch-{item.program.key}-{id(item)}"): item
-                   for item in items}
-        try:
-            for future in as_completed(futures):
-                item = futures[future]
-                try:
-                    result = future.result()
-                except Exception as exc:            # the worker lost, the task failed
-                    result = {"status": -1, "files": {job.LOG: f"{exc!r}\n".encode()}}
-                _receive(item, result)
-                done(item, result["status"])
-        except BaseException:
-            client.cancel(list(futures))
-            for item in futures.values():
-                item.discard()
-            raise
+
+
+def run_cluster(client, items: list, done: Callable, tests: Path | None = None) -> None:
+    """Run each item's job on the cluster of ``client``; ``done(item, status)`` as each
+    comes back."""
+    from distributed import as_completed  # noqa: PLC0415  heavy: distributed (springscene[dask])
+    futures = {client.submit(run_remote, payload(item, tests), pure=False,
+                             key=f"springscene-batch-{item.program.key}-{id(item)}"): item
+               for item in items}
+    try:
+        for future in as_completed(futures):
+            item = futures[future]
+            try:
+                result = future.result()
+            except Exception as exc:            # the worker lost, the task failed
+                result = {"status": -1, "files": {job.LOG: f"{exc!r}\n".encode()}}
+            _receive(item, result)
+            done(item, result["status"])
+    except BaseException:
+        client.cancel(list(futures))
+        for item in futures.values():
+            item.discard()
+        raise

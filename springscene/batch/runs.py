@@ -22,7 +22,7 @@ from ..errors import UserError
 from ..outputs import check_writable_folder
 from ..vpython.run.options import RunOptions
 from . import job
-from .cluster import run_cluster
+from .cluster import connect, run_cluster
 from .index import write_index
 from .local import run_local
 from .plan import RESULT, Program, find_programs, finished_row
@@ -177,8 +177,20 @@ def run_batch(paths: list[str], out_dir: str | Path, settings: Settings = Settin
         raise UserError(f"--jobs {jobs}: must be at least 1")
     if settings.tests is not None and not settings.tests.is_file():
         raise UserError(f"--tests {settings.tests}: no such file")
-    prepare_out_dir(out_dir)
-    batch = Batch(programs, out_dir, settings, on_row)
+    client = connect(scheduler) if scheduler is not None else None
+    try:
+        prepare_out_dir(out_dir)
+        return _run(Batch(programs, out_dir, settings, on_row), client, jobs, force, on_plan)
+    finally:
+        if client is not None:
+            client.close()
+
+
+def _run(batch: Batch, client, jobs: int | None, force: bool,
+         on_plan: Callable[[int, int], None] | None) -> list[dict]:
+    """The programs not done before, run here (``jobs`` at a time) or on ``client``'s
+    cluster; every program's row."""
+    programs, out_dir, settings = batch.programs, batch.out_dir, batch.settings
     todo = []
     for program in programs:
         row = None if force else finished_row(program, out_dir, settings.fingerprint(),
@@ -190,8 +202,8 @@ def run_batch(paths: list[str], out_dir: str | Path, settings: Settings = Settin
     if on_plan is not None:
         on_plan(len(programs), len(programs) - len(todo))
     batch.write()
-    if scheduler is not None:
-        run_cluster(scheduler, todo, batch.done, settings.tests)
+    if client is not None:
+        run_cluster(client, todo, batch.done, settings.tests)
     else:
         jobs = jobs or os.cpu_count() or 1
         run_local(todo, jobs, batch.done, env=job_environment(jobs))

@@ -27,6 +27,9 @@ import pytest
 from PIL import Image
 
 from conftest import ROOT, run_cli
+from springscene.batch.plan import find_programs
+from springscene.batch.runs import job_environment
+from springscene.errors import UserError
 from springscene.video import count_frames
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
@@ -230,10 +233,38 @@ def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
 
 
 def test_llvmpipe_threads_are_shared_among_the_jobs(monkeypatch):
-    from springscene.batch.runs import job_environment
     monkeypatch.delenv("LP_NUM_THREADS", raising=False)
     monkeypatch.setattr(os, "cpu_count", lambda: 8)
     assert job_environment(2)["LP_NUM_THREADS"] == "4"
     assert job_environment(16)["LP_NUM_THREADS"] == "1"
     monkeypatch.setenv("LP_NUM_THREADS", "3")
     assert job_environment(2) is None                 # the user's own choice kept
+
+
+def test_a_folder_a_student_reads_its_own_folder_a_file_a_student_only_itself(tmp_path):
+    lab = tmp_path / "lab"
+    make_class(lab, ["alice"])                                  # lab/alice.py
+    (lab / "bob").mkdir()                                      # lab/bob/: one program
+    (lab / "bob" / "spring.py").write_text("from vpython import *\n")
+    (lab / "carol").mkdir()                                    # lab/carol/: two, and a module
+    (lab / "carol" / "part1.py").write_text("GlowScript 3.2 VPython\nbox()\n")
+    (lab / "carol" / "part2.py").write_text("from visual import *\n")
+    (lab / "carol" / "helpers.py").write_text("def f(): pass\n")
+    (lab / "notes").mkdir()                                    # no program: left alone
+    (lab / "readme.txt").write_text("not a program")
+    found = {p.key: p for p in find_programs([str(lab)])}
+    assert list(found) == ["alice", "bob", "carol/part1", "carol/part2"]
+    assert found["alice"].readable == (lab / "alice.py",) and not found["alice"].folder
+    assert found["bob"].readable == (lab / "bob",) and found["bob"].stem == "bob"
+    assert found["carol/part2"].path == lab / "carol" / "part2.py"
+    assert found["carol/part2"].stem == "part2"
+
+
+def test_names_that_clash_are_bad_input(tmp_path):
+    make_class(tmp_path / "a", ["alice"])
+    make_class(tmp_path / "b", ["alice"])
+    with pytest.raises(UserError, match="two programs named 'alice'"):
+        find_programs([str(tmp_path / "a"), str(tmp_path / "b" / "alice.py")])
+    (tmp_path / "x.txt").write_text("print(1)")
+    with pytest.raises(UserError, match="x.txt: not a Python program"):
+        find_programs([str(tmp_path / "x.txt")])
