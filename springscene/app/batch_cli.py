@@ -39,13 +39,15 @@ def add_batch_command(sub) -> None:
     s.add_argument("--scheduler", metavar="ADDRESS",
                    help="run the programs on this Dask cluster (tcp://host:8786) instead "
                    "of here (pip install 'springscene[dask]')")
-    s.add_argument("--duration", type=float, default=DEFAULT_DURATION,
-                   help=f"program seconds to film (default {DEFAULT_DURATION:g})")
-    s.add_argument("--fps", type=int, default=DEFAULT_FPS,
-                   help=f"frames per program second (default {DEFAULT_FPS})")
-    s.add_argument("--timeout", type=float, default=DEFAULT_TIMEOUT, metavar="S",
-                   help=f"stop a program after S seconds of wall clock (default "
-                   f"{DEFAULT_TIMEOUT:g})")
+    s.add_argument("--duration", type=float,
+                   help=f"program seconds to film (default: the tests' vpython_program "
+                   f"marker's, else {DEFAULT_DURATION:g})")
+    s.add_argument("--fps", type=int,
+                   help=f"frames per program second (default: the tests' marker's, else "
+                   f"{DEFAULT_FPS})")
+    s.add_argument("--timeout", type=float, metavar="S",
+                   help=f"stop a program after S seconds of wall clock (default: the tests' "
+                   f"marker's, else {DEFAULT_TIMEOUT:g})")
     s.add_argument("--max-memory", metavar="SIZE",
                    help="stop a program when it uses more memory, e.g. 500M or 2G (default: "
                    "half the machine's, shared among --jobs)")
@@ -67,21 +69,32 @@ def add_batch_command(sub) -> None:
 
 def settings_of(args: argparse.Namespace, jobs: int) -> Settings:
     """The flags as a batch's settings, checked before anything is written."""
-    options = RunOptions(duration=args.duration, fps=args.fps, backend=args.backend,
+    asked = _asked(args)
+    options = RunOptions(duration=asked["duration"], fps=asked["fps"], backend=args.backend,
                          antialias=not args.draft, quality=args.quality)
     suffix = f".{args.format}"
     with tempfile.NamedTemporaryFile(suffix=".py") as probe:     # the options alone checked
         check_request(probe.name, Path(tempfile.gettempdir()) / f"check{suffix}", options)
-    if not (args.timeout > 0 and args.timeout != float("inf")):
-        raise UserError(f"--timeout {args.timeout:g}: must be a number of seconds above 0")
+    timeout = asked["timeout"]
+    if not (timeout > 0 and timeout != float("inf")):
+        raise UserError(f"--timeout {timeout:g}: must be a number of seconds above 0")
     max_memory = args.max_memory
     if max_memory is None:
         max_memory = size_text(max(memory_limit(None) // jobs, 256 << 20)) \
             if machine_memory() else None
     else:
         memory_limit(max_memory)
-    return Settings(options=options, suffix=suffix, timeout=args.timeout,
+    return Settings(options=options, suffix=suffix, timeout=timeout,
                     max_memory=max_memory, sandbox=not args.no_sandbox, tests=args.tests)
+
+
+def _asked(args: argparse.Namespace) -> dict:
+    """Duration, frames per second and timeout: the flag's, else what the tests' marker
+    asks (``vpython_program("lab.py", duration=5, fps=100)``), else the batch's default."""
+    marked = {}
+    defaults = {"duration": DEFAULT_DURATION, "fps": DEFAULT_FPS, "timeout": DEFAULT_TIMEOUT}
+    return {key: getattr(args, key) if getattr(args, key) is not None else
+            marked.get(key, default) for key, default in defaults.items()}
 
 
 def run_batch_command(args: argparse.Namespace) -> int:
