@@ -82,8 +82,9 @@ h1{font-size:1.4em;margin:0 0 .3em}
 .cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(250px,1fr));gap:14px;
 margin-top:1em}
 .card{background:#fff;border:1px solid #ddd;border-radius:6px;padding:8px;overflow:hidden}
-.card img{width:100%;height:auto;display:block;background:#000;border-radius:3px}
-.none{height:120px;background:#eee;display:flex;align-items:center;justify-content:center;
+.card img{width:100%;height:180px;object-fit:contain;display:block;background:#eee;
+border-radius:3px}
+.none{height:180px;background:#eee;display:flex;align-items:center;justify-content:center;
 color:#777;border-radius:3px}
 .name{font-weight:600;margin:.4em 0 .2em;word-break:break-all}
 .status{color:#fff;border-radius:3px;padding:0 .4em;font-size:.85em}
