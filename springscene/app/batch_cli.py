@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -131,8 +132,10 @@ class _Progress:
             print(f"springscene: {skipped} of {total} programs done before (--force runs "
                   "them again)", file=sys.stderr)
         if sys.stderr.isatty() and total > skipped:
+            size = shutil.get_terminal_size((80, 24))      # (a pty no one sized: 80 x 24)
             self.bar = tqdm_class()(total=total - skipped, desc="programs", unit=" program",
-                                    file=sys.stderr, leave=False)
+                                    file=sys.stderr, leave=False, ncols=size.columns,
+                                    nrows=size.lines)
 
     def row(self, row: dict) -> None:
         if self.quiet:
