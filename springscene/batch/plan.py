@@ -33,6 +33,7 @@ RESULT = "result.json"        # a program's row, written last: the program is do
 _VPYTHON = re.compile(r"^\s*(from|import)\s+(vpython|visual)\b|^\s*(Web VPython|GlowScript) ",
                       re.MULTILINE)
 _NAME = re.compile(r"[^\w.+-]+")
+_TAKEN = ("index.html", "summary.csv", "summary.json")     # the batch's own files in DIR
 
 
 @dataclass(frozen=True)
@@ -124,7 +125,7 @@ def _looks_like_vpython(path: Path) -> bool:
 def _key_part(name: str) -> str:
     """A name as a folder of the output: what a file name may hold, never ``..``."""
     part = _NAME.sub("_", name).strip(".") or "program"
-    return part
+    return f"_{part}" if part.lower() in _TAKEN else part
 
 
 def _check_unique(programs: list[Program]) -> None:

@@ -217,7 +217,7 @@ def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
     _, local, _, _ = ran
     programs = make_class(tmp_path / "class", ["alice", "bob", "dave"])
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster:
+                                  dashboard_address=":0") as cluster:
         proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", *FLAGS,
                        "--no-sandbox", "--scheduler", cluster.scheduler_address)
     assert proc.returncode == 0, proc.stderr
