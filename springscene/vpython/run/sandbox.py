@@ -8,11 +8,14 @@ puts before its child interpreter. Inside, the program sees:
   pieces of ``/etc`` the loader, fonts and ``alternatives`` need, GlowScript's library
   cache, the CPUs' description in ``/sys``; the program file and :attr:`Sandbox.readable`;
 - writable: only the run's private output folder; a private ``/tmp`` holding a throwaway
-  ``HOME``; its own ``/proc`` and a minimal ``/dev``;
-- nothing else: no network (``--unshare-all``), its own PID namespace (when the sandbox's
-  first process dies, every process inside dies with it; ``--die-with-parent`` ends it
-  with springscene), a new session (no terminal to type into), a cleared environment but
-  for the locale, springscene's and the renderer's variables (:func:`environment`).
+  ``HOME`` and a ``/dev/shm``, both small (memory ``--max-memory`` does not see); its own
+  ``/proc`` (the kernel's settings read-only) and a minimal, read-only ``/dev``; the rest
+  of its root is read-only, and so are the folders leading to what it sees in ``/tmp``;
+- nothing else: no capabilities, no network (``--unshare-all``), its own user and PID
+  namespaces (when the sandbox's first process dies, every process inside dies with it;
+  ``--die-with-parent`` ends it with springscene), a new session (no terminal to type
+  into), a cleared environment but for the locale, springscene's and the renderer's
+  variables (:func:`environment`).
 
 A program's read or write outside fails as on any file missing or read-only: its own
 ``FileNotFoundError``, ``PermissionError`` or ``OSError`` naming the path.
@@ -47,6 +50,18 @@ KEPT = ("LANG", "LANGUAGE", "TZ", "PYTHONHASHSEED", "PYTHONIOENCODING", "PYTHONU
         "MKL_NUM_THREADS")
 KEPT_PREFIXES = ("LC_", "SPRINGSCENE_", "VTK_", "MESA_", "LIBGL_", "EGL_", "__EGL_")
 TRIAL_TIMEOUT = 30.0        # s: bwrap's trial run
+TMP_SIZE = 256 << 20        # the private /tmp and /dev/shm: memory --max-memory does not see
+SHM_SIZE = 64 << 20         # (/dev/shm: multiprocessing's semaphores)
+# every namespace of its own (a user namespace too: no power over the host's objects, even
+# for a root caller's program, which keeps uid 0 but no capability); ended with
+# springscene; no terminal to type into
+ISOLATION = ("--unshare-all", "--unshare-user", "--cap-drop", "ALL", "--die-with-parent",
+             "--new-session")
+# its own /proc, but the kernel's settings and sysrq read-only (uid 0 could write them),
+# a minimal /dev, a private /tmp
+SYSTEM_FILES = ("--proc", "/proc", "--ro-bind", "/proc/sys", "/proc/sys",
+                "--ro-bind-try", "/proc/sysrq-trigger", "/proc/sysrq-trigger",
+                "--dev", "/dev", "--size", str(TMP_SIZE), "--tmpfs", "/tmp")
 
 
 @dataclass(frozen=True)
@@ -70,9 +85,7 @@ def unavailable() -> str | None:
     found = bwrap()
     if found is None:
         return "bwrap is not installed (Debian's bubblewrap)"
-    trial = [found, "--unshare-all", "--die-with-parent", "--new-session",
-             "--ro-bind", "/", "/", "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp",
-             "true"]
+    trial = [found, *ISOLATION, "--ro-bind", "/", "/", *SYSTEM_FILES, "true"]
     try:
         done = subprocess.run(trial, stdin=subprocess.DEVNULL, capture_output=True,
                               text=True, timeout=TRIAL_TIMEOUT)
@@ -98,9 +111,12 @@ def own_folder(program: str | Path) -> tuple[str, ...]:
 def command(sandbox: Sandbox, program: str | Path, writable: Path) -> list[str]:
     """The ``bwrap`` command line that starts what follows it in the sandbox: the run of
     ``program`` writing into ``writable`` (the run's private folder) alone."""
-    args = [bwrap() or "bwrap", "--unshare-all", "--die-with-parent", "--new-session",
-            "--clearenv", "--proc", "/proc", "--dev", "/dev", "--tmpfs", "/tmp",
+    args = [bwrap() or "bwrap", *ISOLATION, "--clearenv", *SYSTEM_FILES,
+            "--size", str(SHM_SIZE), "--tmpfs", "/dev/shm",
             "--dir", HOME]
+    writable = os.path.abspath(writable)
+    shown = [str(program), *sandbox.readable, writable]
+    args += _closed_folders(shown)
     for path in SYSTEM:
         args += _bound(path)
     for name in ETC:
@@ -114,8 +130,8 @@ def command(sandbox: Sandbox, program: str | Path, writable: Path) -> list[str]:
         args += ["--ro-bind", str(fonts), f"{MPLCONFIGDIR}/{fonts.name}"]
     for path in (str(program), *sandbox.readable):
         args += _bound(os.path.abspath(path))
-    writable = os.path.abspath(writable)
     args += ["--bind", writable, writable]
+    args += ["--remount-ro", "/", "--remount-ro", "/dev"]    # (their tmpfs, bwrap's own)
     for name, value in environment(library).items():
         args += ["--setenv", name, value]
     args += ["--chdir", _working_folder(sandbox, program, writable)]
@@ -148,6 +164,23 @@ def _bound(path: str) -> list[str]:
     real = os.path.realpath(path)
     same = ["--ro-bind", real, real]
     return same if real == path else same + ["--ro-bind", real, path]
+
+
+def _closed_folders(paths: list[str]) -> list[str]:
+    """The folders that lead to ``paths`` inside the private ``/tmp``, made read-only
+    (``0555``; the program runs without capabilities): the host's paths around what the
+    program sees cannot be written even in its throwaway ``/tmp``. (Elsewhere they are in
+    the sandbox's read-only root.)"""
+    folders: set[str] = set()
+    for path in paths:
+        parent = os.path.dirname(os.path.abspath(path))
+        while parent.startswith("/tmp/"):
+            folders.add(parent)
+            parent = os.path.dirname(parent)
+    args: list[str] = []
+    for folder in sorted(folders, key=lambda f: f.count("/")):
+        args += ["--perms", "0555", "--dir", folder]
+    return args
 
 
 def _python_folders() -> list[str]:
