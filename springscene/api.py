@@ -466,8 +466,7 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
         (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout``,
-        ``max_memory`` and ``sandbox`` (a ``springscene.vpython.run.sandbox.Sandbox``) for
-        the supervised run (a child process), or ``supervised=False``.
+        ``max_memory``, ``sandbox`` (a ``Sandbox``) or ``supervised=False``.
 
     Returns
     -------

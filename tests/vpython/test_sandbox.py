@@ -11,7 +11,10 @@ run's interpreter: the slow tier (tests/conftest.py, rule 4)."""
 from __future__ import annotations
 
 import os
+import signal
 import socket
+import subprocess
+import sys
 import textwrap
 import threading
 import time
@@ -253,16 +256,19 @@ def test_a_program_reads_its_own_data_and_texture_and_gives_its_video(course):
     assert middle[1] > 100 and middle[1] > 2 * max(middle[0], middle[2])   # the texture
 
 
-def test_timeout_stops_a_program_inside_and_nothing_is_left(course, capfd):
-    marker = f"spinning-{os.getpid()}-{time.time_ns()}"
+def test_timeout_and_the_stall_diagnosis_reach_a_program_inside(course, capfd):
     prog = course["alice"] / "prog.py"
-    prog.write_text(TINY + f"import sys\nsys.argv.append({marker!r})\nwhile True:\n    pass\n")
-    start = time.monotonic()
+    prog.write_text(TINY + "rate(50)\nwhile True:\n    pass\n")
+    start, said = time.monotonic(), []
     with pytest.raises(RunEnded) as ended:
-        run_supervised(prog, course["out"] / "alice.png", RunOptions(), timeout=4,
+        run_supervised(prog, course["out"] / "alice.mp4", RunOptions(), timeout=6,
+                       stall_after=1, say=said.append,
                        sandbox=Sandbox((str(course["alice"]),)))
-    assert ended.value.status == EXIT_TIMEOUT and "--timeout 4 s" in str(ended.value)
-    assert time.monotonic() - start < 15
+    assert ended.value.status == EXIT_TIMEOUT and "--timeout 6 s" in str(ended.value)
+    assert time.monotonic() - start < 20
+    assert any("no rate() or sleep() call in" in line and "of prog.py" in line
+               for line in said), said
+    assert _gone(str(prog), within=5)
     assert list(course["out"].iterdir()) == []
     capfd.readouterr()
 
@@ -283,6 +289,49 @@ def test_max_memory_stops_a_program_or_its_fork_inside(course, capfd, where):
     assert "over --max-memory 700M" in str(ended.value)
     assert list(course["out"].iterdir()) == []
     capfd.readouterr()
+
+
+def _default_signals() -> None:
+    for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        signal.signal(signum, signal.SIG_DFL)
+
+
+def _gone(marker: str, within: float) -> bool:
+    deadline = time.monotonic() + within
+    while _marked(marker):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
+@pytest.mark.parametrize("signum", [signal.SIGINT, signal.SIGKILL], ids=["ctrl-c", "sigkill"])
+def test_ctrl_c_or_springscene_killed_ends_everything_inside(course, signum):
+    """springscene's Ctrl-C kills the sandbox; killed outright, bubblewrap kills it and the
+    janitor outside removes the run's folder. The program spins with a fork of its own."""
+    prog = course["alice"] / "prog.py"
+    prog.write_text(TINY + "import os\nos.fork()\nrate(50)\nwhile True:\n    pass\n")
+    proc = subprocess.Popen([str(Path(sys.executable).parent / "springscene"), "vpython",
+                             str(prog), "--out", str(course["out"] / "alice.mp4"),
+                             "--sandbox"], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, preexec_fn=_default_signals)
+    deadline = time.monotonic() + 60
+    while len(_marked(str(prog))) < 4:      # bwrap, its first process, the program, its fork
+        assert time.monotonic() < deadline and proc.poll() is None
+        time.sleep(0.05)
+    time.sleep(1)
+    proc.send_signal(signum)
+    _, err = proc.communicate(timeout=60)
+    if signum == signal.SIGINT:
+        assert proc.returncode == 130 and err.strip().splitlines()[-1].startswith(
+            "springscene: interrupted")
+    else:
+        assert proc.returncode == -signal.SIGKILL
+    assert _gone(str(prog), within=10)
+    deadline = time.monotonic() + 10
+    while list(course["out"].iterdir()) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert list(course["out"].iterdir()) == []
 
 
 def test_the_command_line_flag_runs_the_program_in_its_folder(course, cli):

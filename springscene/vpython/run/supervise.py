@@ -108,7 +108,7 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
     except OSError as exc:
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
     try:
-        with _stop_signals():
+        with _stop_signals(), _janitor(folder, sandbox is not None):
             # the child writes every file in the private folder; they move out when whole
             child_options = options if options.record is None else dataclasses.replace(
                 options, record=str(folder / Path(options.record).name))
@@ -158,10 +158,36 @@ def _stop_signals():
             signal.signal(signum, handler)
 
 
+# removes the folder named by $0 once its stdin ends (a second try if a dying process
+# inside was still writing there)
+_SWEEP = 'read _; rm -rf -- "$0" 2>/dev/null || { sleep 1; rm -rf -- "$0"; }'
+
+
+@contextlib.contextmanager
+def _janitor(folder: Path, needed: bool):
+    """For a sandboxed run: a shell outside the sandbox that removes the run's folder if
+    springscene is killed outright (SIGKILL: bwrap then kills everything inside, and
+    nobody there could remove it). It waits for the end of a pipe only this process
+    holds; the run's end here ends it."""
+    if not needed:
+        yield
+        return
+    janitor = subprocess.Popen(["/bin/sh", "-c", _SWEEP, str(folder)], stdin=subprocess.PIPE,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               **_OWN_GROUP)
+    try:
+        yield
+    finally:
+        janitor.kill()
+        janitor.wait()
+        janitor.stdin.close()
+
+
 def _start(request: dict, jail: list[str] | None = None) -> subprocess.Popen:
     """The child: a fresh interpreter in its own process group (a terminal's Ctrl-C reaches
     this process, which ends the child), reporting on a pipe; started by ``jail`` (a
-    sandbox's command line), if given, which knows no parent (``0``: see :mod:`.lineage`)."""
+    sandbox's command line), if given, which knows no parent (``0``: see :mod:`.lineage`)
+    and reads nothing from this process's terminal."""
     read, write = os.pipe()
     # not the working folder on the path (the program's own folder goes there), and this
     # springscene found last where no installation provides it
@@ -170,7 +196,8 @@ def _start(request: dict, jail: list[str] | None = None) -> subprocess.Popen:
     try:
         child = subprocess.Popen([*(jail or []), sys.executable, "-c", code, str(write),
                                   str(0 if jail else os.getpid()), json.dumps(request)],
-                                 pass_fds=(write,), **_OWN_GROUP)
+                                 pass_fds=(write,), **_OWN_GROUP,
+                                 stdin=subprocess.DEVNULL if jail else None)
     except BaseException:
         os.close(read)
         raise
