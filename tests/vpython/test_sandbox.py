@@ -347,6 +347,13 @@ def test_the_command_line_flag_runs_the_program_in_its_folder(course, cli):
     assert proc.stdout.startswith("5\n")         # its working folder is its own
 
 
+def test_the_command_lines_program_reads_its_folder_unless_the_folder_is_shared(tmp_path):
+    own = tmp_path / "alice" / "prog.py"
+    assert sandboxing.own_folder(own) == (str(tmp_path / "alice"),)
+    for shared in (Path.home(), Path("/tmp"), Path("/")):
+        assert sandboxing.own_folder(shared / "prog.py") == (str(shared / "prog.py"),)
+
+
 def test_where_no_sandbox_can_be_made_the_flag_says_why_in_one_line(course, cli, monkeypatch,
                                                                      tmp_path):
     prog = course["alice"] / "prog.py"

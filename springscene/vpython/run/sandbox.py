@@ -29,6 +29,7 @@ import shutil
 import site
 import subprocess
 import sys
+import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -98,11 +99,12 @@ def unavailable() -> str | None:
 
 
 def own_folder(program: str | Path) -> tuple[str, ...]:
-    """What one program may read: its folder, unless that folder is a home folder, the
-    root or holds one (then its file alone)."""
+    """What one program may read: its folder, unless that folder is shared (the root, a
+    home folder or one holding homes, a temporary folder): then its file alone."""
     path = Path(program).resolve()
     folder = path.parent
-    homes = {Path.home().resolve(), Path("/home"), Path("/root"), Path("/")}
+    homes = {Path.home().resolve(), Path("/home"), Path("/root"), Path("/"), Path("/tmp"),
+             Path("/var/tmp"), Path("/dev/shm"), Path(tempfile.gettempdir()).resolve()}
     if any(folder == home or home.is_relative_to(folder) for home in homes):
         return (str(path),)
     return (str(folder),)
