@@ -113,7 +113,7 @@ def last_line(error) -> str:
 def test_the_graders_tests_another_students_work_and_the_home_cannot_be_read(course, capfd):
     error = hostile(course, f"""
         attempt("grading", lambda: open({str(course['grading'])!r}).read())
-        attempt("listing", lambda: os.listdir({str(course['room'])!r}))
+        attempt("listing", lambda: sorted(os.listdir({str(course['room'])!r})))
         attempt("bob", lambda: open({str(course['bob'])!r}).read())
         attempt("key", lambda: open({str(course['key'])!r}).read())
         attempt("home key", lambda: open(os.path.expanduser("~/.ssh/id_rsa")).read())
@@ -125,7 +125,7 @@ def test_the_graders_tests_another_students_work_and_the_home_cannot_be_read(cou
     for what in ("grading", "bob", "key", "home key", "root", "tests"):
         assert f"refused {what} FileNotFoundError" in out
     # the class folder shows only the places of Alice's folder and of her output's
-    assert "done listing ['out', 'alice']" in out
+    assert "done listing ['alice', 'out']" in out
     assert last_line(error) == ("FileNotFoundError: [Errno 2] No such file or directory: "
                                 f"'{Path(__file__).parent}'")
 

@@ -39,9 +39,10 @@ from ..page import glow_library
 PACKAGE = Path(__file__).resolve().parents[2]       # springscene's own package folder
 HOME = "/tmp/home"                                  # the throwaway HOME, in the private /tmp
 MPLCONFIGDIR = f"{HOME}/.config/matplotlib"
-# what the loader, fonts, Debian's alternatives (libblas, ...) and a user's name need
+# what the loader, fonts, Debian's alternatives (libblas, ...) and Mesa need (not the
+# machine's users)
 ETC = ("ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "fonts", "localtime",
-       "passwd", "group", "nsswitch.conf", "mime.types", "drirc", "glvnd")
+       "mime.types", "drirc", "glvnd")
 SYSTEM = ("/usr", "/lib", "/lib32", "/lib64", "/libx32", "/bin", "/sbin")
 SHARED = ("/var/cache/fontconfig", "/sys/devices/system/cpu")
 # the environment kept inside: the locale, and springscene's, VTK's, Mesa's, EGL's and
