@@ -291,6 +291,25 @@ def test_max_memory_stops_a_program_or_its_fork_inside(course, capfd, where):
     capfd.readouterr()
 
 
+ENDINGS = [("import sys; sys.exit(3)", 3, "the program exited with status 3 (sys.exit)"),
+           ("import os; os._exit(7)", 7, "ended with status 7 (os._exit?)"),
+           ("import ctypes; ctypes.string_at(0)", 139, "killed by SIGSEGV (a crash")]
+
+
+@pytest.mark.parametrize("end, status, said", ENDINGS, ids=["sys.exit", "os._exit", "segfault"])
+def test_a_program_inside_ends_as_outside(course, capfd, end, status, said):
+    """bwrap passes on the exit status, and an interpreter's death by a signal as 128 + n:
+    the same line and status as without a sandbox."""
+    prog = course["alice"] / "prog.py"
+    prog.write_text(TINY + "rate(50)\n" + end + "\n")
+    with pytest.raises(RunEnded) as ended:
+        run_supervised(prog, course["out"] / "alice.mp4", RunOptions(),
+                       sandbox=Sandbox((str(course["alice"]),)))
+    assert ended.value.status == status and said in str(ended.value), str(ended.value)
+    assert list(course["out"].iterdir()) == []
+    capfd.readouterr()
+
+
 def _default_signals() -> None:
     for signum in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
         signal.signal(signum, signal.SIG_DFL)

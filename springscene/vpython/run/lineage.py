@@ -16,8 +16,8 @@
   when a report finds the pipe to the parent closed.
 - **In a sandbox** (:mod:`.sandbox`) springscene is outside the child's PID namespace and
   cannot be watched from inside (parent ``0``): bubblewrap kills the sandbox with
-  springscene (``--die-with-parent``), and the next run to the same output removes the
-  folder left (:mod:`.supervise`). A report that finds the pipe closed ends the run here.
+  springscene (``--die-with-parent``), and a janitor outside removes the run's folder
+  (:mod:`.supervise`). A report that finds the pipe closed ends the run here.
 """
 
 from __future__ import annotations
