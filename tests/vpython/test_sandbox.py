@@ -228,8 +228,10 @@ def test_a_lingering_process_dies_with_the_run_and_writes_nothing(course, capfd)
     capfd.readouterr()
 
 
-def test_a_program_reads_its_own_data_and_texture_and_gives_its_video(course):
-    """Readable works: a data file and a texture in the program's folder."""
+def test_a_program_reads_its_own_data_and_texture_and_gives_its_video(course, monkeypatch):
+    """Readable works: a data file and a texture in the program's folder; the video is the
+    one a run without a sandbox gives."""
+    monkeypatch.chdir(course["alice"])           # (for the run without a sandbox)
     alice = course["alice"]
     (alice / "start.txt").write_text("0.5 0 0\n")
     Image.fromarray(np.full((8, 8, 3), (0, 200, 0), np.uint8)).save(alice / "green.png")
@@ -249,6 +251,10 @@ def test_a_program_reads_its_own_data_and_texture_and_gives_its_video(course):
                             sandbox=Sandbox((str(alice),)))
     assert result.frames == 25
     assert sorted(p.name for p in course["out"].iterdir()) == ["alice.mp4"]
+    # the same bytes as the run without a sandbox
+    run_supervised(prog, course["out"] / "plain.mp4", RunOptions(duration=0.5, page=False))
+    assert (course["out"] / "alice.mp4").read_bytes() == \
+        (course["out"] / "plain.mp4").read_bytes()
     still = course["out"] / "alice.png"
     run_supervised(prog, still, RunOptions(page=False), sandbox=Sandbox((str(alice),)))
     pixels = np.asarray(Image.open(still).convert("RGB")).astype(int)
