@@ -21,6 +21,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..errors import UserError
+from ..vpython.run.sandbox import unavailable
 from . import job
 
 MAX_INPUT = 200 << 20          # bytes of a student's folder sent with their program
@@ -60,8 +61,8 @@ def run_remote(data: dict) -> dict:
             path.parent.mkdir(parents=True, exist_ok=True)
             path.write_bytes(content)
         request = {**data["request"], "program": str(inputs / data["program"]),
-                   "folder": str(out),
-                   "readable": [str(inputs if data["folder"] else inputs / data["program"])]}
+                   "folder": str(out), "readable": [str(inputs)] if data["folder"] else [],
+                   "cwd": str(inputs) if data["folder"] else None}
         if data["tests"] is not None:
             tests = Path(tmp) / "tests" / data["tests"][0]
             tests.parent.mkdir()
@@ -95,6 +96,14 @@ def connect(address: str):
         return Client(address, timeout="10s")
     except (OSError, TimeoutError, ValueError) as exc:
         raise UserError(f"--scheduler {address}: cannot reach it ({exc})") from None
+
+
+def sandbox_missing(client) -> str | None:
+    """Why some worker of ``client``'s cluster cannot make a sandbox (naming it), or None."""
+    for worker, why in sorted(client.run(unavailable).items()):
+        if why is not None:
+            return f"{worker}: {why}"
+    return None
 
 
 def run_cluster(client, items: list, done: Callable, tests: Path | None = None) -> None:

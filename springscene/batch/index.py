@@ -22,7 +22,7 @@ from ..outputs import atomic_path
 COLUMNS = ("name", "program", "status", "detail", "program_seconds", "frames", "wall_seconds",
            "peak_memory", "dialect", "score", "max_score", "grade_error")
 STATUS_COLOURS = {"ran": "#2e7d32", "error": "#c62828", "exit": "#c62828",
-                  "timeout": "#ef6c00", "memory": "#ef6c00", "crashed": "#6a1b9a",
+                  "timeout": "#ef6c00", "memory": "#ef6c00", "crashed": "#6a1b9a", "sandbox": "#ad1457",
                   "refused": "#455a64", "failed": "#455a64"}
 
 

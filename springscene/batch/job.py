@@ -14,8 +14,10 @@ in a temporary folder.
 A row says how the run ended (``status``): ``ran``; ``error`` (the program raised:
 ``detail`` is the error's first line, and the files up to it are there); ``exit``
 (``sys.exit`` with a failure); ``timeout``; ``memory`` (over ``--max-memory``);
-``crashed`` (killed by a signal); ``refused`` (springscene would not run it: not a
-program it can read, no sandbox); ``failed`` (a file could not be written).
+``crashed`` (killed by a signal); ``sandbox`` (the program raised at something the
+sandbox kept from it: another's file, the home folder, the network; ``detail`` is its
+error); ``refused`` (springscene would not run it: not a program it can read, no
+sandbox); ``failed`` (a file could not be written).
 """
 
 from __future__ import annotations
@@ -35,6 +37,7 @@ from ..outputs import atomic_path
 from ..video import ffmpeg_exe
 from ..vpython.run.options import RunOptions
 from ..vpython.run.runner import ProgramExit, ProgramRaised, ProgramResult
+from ..vpython.run.sandbox import Sandbox
 from ..vpython.run.supervise import EXIT_TIMEOUT, RunEnded, run_supervised
 from .plan import RESULT
 
@@ -49,15 +52,25 @@ _STOPPED = re.compile(r"(stopped by --timeout \S+ s|over --max-memory [^\s,]+|th
                       r"killed by [^(]*?\S(?= \(| at| before)|the program exited with status \d+)")
 
 
+_PATH = re.compile(r"'(/[^']*)'")          # the path an OSError's message names
+_FILE_ERRORS = ("FileNotFoundError", "PermissionError", "OSError", "IsADirectoryError",
+                "NotADirectoryError")
+_NETWORK_ERRORS = ("ConnectionRefusedError", "gaierror")
+_NETWORK_WORDS = ("Network is unreachable", "Temporary failure in name resolution")
+
+
 def request(program: Path, folder: Path, stem: str, *, suffix: str, options: RunOptions,
             timeout: float | None, max_memory: str | None, sandbox: bool,
-            readable: tuple[Path, ...], tests: Path | None, settings: dict) -> dict:
+            readable: tuple[Path, ...], folder_of_its_own: bool, tests: Path | None,
+            settings: dict) -> dict:
     """What :func:`main` is asked: the program, its staging ``folder`` and the run's
     options, as JSON-ready data; ``settings`` go into the row as they are (a rerun
-    compares them)."""
+    compares them). A program with a folder of its own (``folder_of_its_own``) runs in
+    it (its data files found as in its author's folder), else in its staging folder."""
     return {"program": str(program), "folder": str(folder), "stem": stem, "suffix": suffix,
             "options": options.to_request(), "timeout": timeout, "max_memory": max_memory,
-            "sandbox": sandbox, "readable": [str(p) for p in readable],
+            "sandbox": sandbox, "readable": [str(p) for p in readable if p != program],
+            "cwd": str(program.parent) if folder_of_its_own else None,
             "tests": None if tests is None else str(tests), "settings": settings}
 
 
@@ -70,7 +83,8 @@ def start(job: dict, env: dict | None = None) -> subprocess.Popen:
     code = (f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r}); "
             "from springscene.batch.job import main; sys.exit(main())")
     with open(folder / LOG, "wb") as log:
-        return subprocess.Popen([sys.executable, "-c", code, json.dumps(job)], cwd=folder,
+        return subprocess.Popen([sys.executable, "-c", code, json.dumps(job)],
+                                cwd=job.get("cwd") or folder,
                                 stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
                                 start_new_session=True, env=env, preexec_fn=_die_with_parent)
 
@@ -120,13 +134,16 @@ def _run(job: dict) -> dict:
     options = RunOptions.from_request({**job["options"],
                                        "record": str(folder / f"{job['stem']}.jsonl.gz")})
     out = folder / f"{job['stem']}{job['suffix']}"
+    sandbox = Sandbox(readable=tuple(job["readable"])) if job["sandbox"] else None
     try:
         result = run_supervised(program, out, options, timeout=job["timeout"],
-                                max_memory=job["max_memory"],
+                                max_memory=job["max_memory"], sandbox=sandbox,
                                 say=lambda line: print(line, file=sys.stderr, flush=True))
     except ProgramRaised as exc:
         print(exc, file=sys.stderr)
-        return {**_reached(exc.result), "status": "error", "detail": _error_line(exc.error)}
+        refused = sandbox is not None and refused_by_sandbox(exc.error)
+        return {**_reached(exc.result), "status": "sandbox" if refused else "error",
+                "detail": _error_line(exc.error)}
     except ProgramExit as exc:
         print(exc, file=sys.stderr)
         return {**_reached(None), "status": "exit", "detail": f"exited with status {exc.status}"}
@@ -159,6 +176,20 @@ def _error_line(error: dict) -> str:
     message = (error.get("message") or "").strip().splitlines()
     text = f"{error.get('type', 'Error')}: {message[0]}" if message else error.get("type", "")
     return text + (f" (line {error['line']})" if error.get("line") else "")
+
+
+def refused_by_sandbox(error: dict) -> bool:
+    """Whether a sandboxed program's error is the sandbox's refusal: a file there is (or a
+    folder, for a write) that the program could not read or write, or the network."""
+    kind, message = error.get("type"), error.get("message") or ""
+    if kind in _NETWORK_ERRORS or any(words in message for words in _NETWORK_WORDS):
+        return True
+    path = _PATH.search(message)
+    if kind not in _FILE_ERRORS or path is None:
+        return False
+    if kind == "FileNotFoundError":
+        return os.path.lexists(path[1])
+    return os.path.lexists(path[1]) or os.path.isdir(os.path.dirname(path[1]))
 
 
 def _last_line(text: str) -> str:

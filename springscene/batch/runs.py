@@ -21,8 +21,9 @@ from typing import Callable
 from ..errors import UserError
 from ..outputs import check_writable_folder
 from ..vpython.run.options import RunOptions
+from ..vpython.run.sandbox import unavailable as no_sandbox
 from . import job
-from .cluster import connect, run_cluster
+from .cluster import connect, run_cluster, sandbox_missing
 from .index import write_index
 from .local import run_local
 from .plan import RESULT, Program, find_programs, finished_row
@@ -82,6 +83,7 @@ class Batch:
                               suffix=s.suffix, options=s.options, timeout=s.timeout,
                               max_memory=s.max_memory, sandbox=s.sandbox,
                               readable=tuple(p.resolve() for p in program.readable),
+                              folder_of_its_own=program.folder,
                               tests=None if s.tests is None else s.tests.resolve(),
                               settings=s.fingerprint())
         return Item(program, staging, request)
@@ -179,11 +181,21 @@ def run_batch(paths: list[str], out_dir: str | Path, settings: Settings = Settin
         raise UserError(f"--tests {settings.tests}: no such file")
     client = connect(scheduler) if scheduler is not None else None
     try:
+        if settings.sandbox:
+            _check_sandbox(client)
         prepare_out_dir(out_dir)
         return _run(Batch(programs, out_dir, settings, on_row), client, jobs, force, on_plan)
     finally:
         if client is not None:
             client.close()
+
+
+def _check_sandbox(client) -> None:
+    """Bad input where the programs cannot run in a sandbox (here, or on a worker)."""
+    why = no_sandbox() if client is None else sandbox_missing(client)
+    if why is not None:
+        raise UserError(f"no sandbox {'here' if client is None else 'on the cluster'}: {why} "
+                        "(--no-sandbox runs the programs without one)")
 
 
 def _run(batch: Batch, client, jobs: int | None, force: bool,

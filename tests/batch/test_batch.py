@@ -31,12 +31,15 @@ from springscene.batch.plan import find_programs
 from springscene.batch.runs import job_environment
 from springscene.errors import UserError
 from springscene.video import count_frames
+from springscene.vpython.run.sandbox import unavailable as no_sandbox
 
 PROGRAMS = ROOT / "tests" / "vpython_programs"
 CLASS = {"alice": "batch_fine.py", "bob": "batch_raises.py", "carol": "batch_hangs.py",
          "dave": "batch_hog.py"}
 FLAGS = ["--duration", "0.5", "--fps", "25", "--timeout", "20", "--max-memory", "600M"]
 TIMES = ("wall_seconds", "peak_memory")        # what differs from run to run
+# the class runs as by default, sandboxed, where a sandbox can be made
+SANDBOX = [] if no_sandbox() is None else ["--no-sandbox"]
 
 
 def make_class(folder: Path, names=tuple(CLASS)) -> Path:
@@ -52,7 +55,7 @@ def ran(tmp_path_factory):
     base = tmp_path_factory.mktemp("batch")
     programs, out = make_class(base / "class"), base / "out"
     start = time.monotonic()
-    proc = run_cli("batch", programs, "--out-dir", out, "--jobs", "2", *FLAGS, "--no-sandbox")
+    proc = run_cli("batch", programs, "--out-dir", out, "--jobs", "2", *FLAGS, *SANDBOX)
     return proc, out, programs, time.monotonic() - start
 
 
@@ -218,8 +221,8 @@ def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
     programs = make_class(tmp_path / "class", ["alice", "bob", "dave"])
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster:
-        proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", *FLAGS,
-                       "--no-sandbox", "--scheduler", cluster.scheduler_address)
+        proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", *FLAGS, *SANDBOX,
+                       "--scheduler", cluster.scheduler_address)
     assert proc.returncode == 0, proc.stderr
     remote, here = rows_of(tmp_path / "out"), rows_of(local)
     assert sorted(remote) == ["alice", "bob", "dave"]
@@ -268,3 +271,46 @@ def test_names_that_clash_are_bad_input(tmp_path):
     (tmp_path / "x.txt").write_text("print(1)")
     with pytest.raises(UserError, match="x.txt: not a Python program"):
         find_programs([str(tmp_path / "x.txt")])
+
+
+@pytest.fixture
+def needs_a_sandbox():
+    """Skip (fail in CI) where no sandbox can be made."""
+    why = no_sandbox()
+    if why is not None:
+        if os.environ.get("SPRINGSCENE_REQUIRE_BACKENDS"):
+            pytest.fail(f"a sandbox is required here: {why}")
+        pytest.skip(f"no sandbox here: {why}")
+
+
+NOSY = """from vpython import *
+# A student's lab that reads another student's work: the sandbox keeps it from them.
+box()
+rate(50)
+print(open({other!r}).read())
+"""
+
+
+def test_a_program_cannot_read_another_students_and_says_so_in_its_row(needs_a_sandbox,
+                                                                        tmp_path):
+    programs = make_class(tmp_path / "class", ["alice"])
+    (programs / "mallory.py").write_text(NOSY.format(other=str(programs / "alice.py")))
+    proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", *FLAGS)   # sandboxed
+    assert proc.returncode == 0, proc.stderr
+    rows = rows_of(tmp_path / "out")
+    assert rows["alice"]["status"] == "ran"
+    assert rows["mallory"]["status"] == "sandbox"
+    assert rows["mallory"]["detail"] == ("FileNotFoundError: [Errno 2] No such file or "
+                                         f"directory: '{programs / 'alice.py'}' (line 5)")
+    assert "ball ended" not in (tmp_path / "out" / "mallory" / "log.txt").read_text()
+
+
+def test_where_no_sandbox_can_be_made_batch_says_why_and_writes_nothing(cli, tmp_path,
+                                                                          monkeypatch):
+    monkeypatch.setattr("springscene.batch.runs.no_sandbox", lambda: "bwrap is not installed")
+    make_class(tmp_path / "class", ["alice"])
+    proc = cli("batch", tmp_path / "class", "--out-dir", tmp_path / "out")
+    assert proc.returncode == 2
+    assert proc.stderr == ("springscene: error: no sandbox here: bwrap is not installed "
+                           "(--no-sandbox runs the programs without one)\n")
+    assert not (tmp_path / "out").exists()
