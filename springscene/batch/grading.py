@@ -212,10 +212,10 @@ def grade_program(program: Path, tests: Path, *, sandbox: bool = True,
     (``overrides``: ``timeout``, ``max_memory``, ``duration``, ``fps``, ``frames``, None
     for the tests'), then graded by :func:`grade`."""
     start = time.perf_counter()
-    options = {**test_options(tests), **{k: v for k, v in overrides.items() if v is not None}}
     program = Path(program)
     if not program.is_file():
         raise UserError(f"{program}: no such program file")
+    options = {**test_options(tests), **{k: v for k, v in overrides.items() if v is not None}}
     box = program_sandbox(program) if sandbox else None
     with tempfile.TemporaryDirectory(prefix="springscene-grade-") as folder:
         recording, failure, said = record(program, Path(folder) / "run.jsonl", options, box)
