@@ -175,10 +175,10 @@ def test_the_lab_scores_full_marks(cli, tmp_path):
     done = cli("grade", GRADING / "spring_lab.py", "--tests", LAB_TESTS, "--results", results,
                "--no-sandbox")
     assert done.returncode == 0, done.stderr
-    assert "spring_lab.py: 4 of 4 tests passed, 4/4 points" in done.stdout
+    assert "spring_lab.py: 4 of 4 tests passed, 5/5 points" in done.stdout
     data = json.loads(results.read_text())
     check_gradescope(data, 4)
-    assert data["score"] == 4.0 and [t["name"] for t in data["tests"]] == LAB_TEST_NAMES
+    assert data["score"] == 5.0 and [t["name"] for t in data["tests"]] == LAB_TEST_NAMES
     assert data["output"].startswith("spring_lab.py: 501 frames, 5.00 s of program time, "
                                      "ended by program")
 
@@ -189,15 +189,16 @@ def test_the_wrong_lab_fails_the_period_naming_the_measured_and_expected(cli, tm
     done = cli("grade", GRADING / "spring_lab_wrong.py", "--tests", LAB_TESTS,
                "--results", results, "--no-sandbox")
     assert done.returncode == 0, done.stderr
-    assert "spring_lab_wrong.py: 1 of 4 tests passed, 1/4 points" in done.stdout
+    assert "spring_lab_wrong.py: 1 of 4 tests passed, 1/5 points" in done.stdout
     data = json.loads(results.read_text())
     check_gradescope(data, 4)
     period = data["tests"][0]
     assert period["name"] == PERIOD and period["status"] == "failed"
+    assert (period["score"], period["max_score"]) == (0.0, 2.0)          # its weight
     assert period["output"].startswith(
         "period 0.4967 s measured from the block's motion, expected 2 pi sqrt(m/k) = "
         "0.9935 s (m = 0.5 kg, k = 20 N/m): off by -50.0%")
-    assert f"FAIL  0/1  {PERIOD}\n        period 0.4967 s measured" in done.stdout
+    assert f"FAIL  0/2  {PERIOD}\n        period 0.4967 s measured" in done.stdout
     assert [t["status"] for t in data["tests"]][2] == "passed"     # it prints its own period
 
 
