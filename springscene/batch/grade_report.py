@@ -53,10 +53,13 @@ class Outcomes:
     def pytest_collection_finish(self, session) -> None:
         for item in session.items:
             program = item.get_closest_marker("vpython_program")
-            self.tests[item.nodeid] = {
-                "name": _name(item.nodeid),
-                "weight": _weight(item.get_closest_marker("weight"), item.nodeid),
-                "options": dict(program.kwargs) if program else {}}
+            try:
+                weight = _weight(item.get_closest_marker("weight"))
+            except ValueError as exc:
+                self.errors.append(f"{item.nodeid}: {exc}")
+                continue
+            self.tests[item.nodeid] = {"name": _name(item.nodeid), "weight": weight,
+                                       "options": dict(program.kwargs) if program else {}}
 
     @pytest.hookimpl(wrapper=True)
     def pytest_runtest_makereport(self, item, call):
@@ -121,15 +124,14 @@ def _name(nodeid: str) -> str:
     return nodeid.split("::", 1)[-1]
 
 
-def _weight(marker, nodeid: str) -> float:
-    """The points of ``@pytest.mark.weight(points)`` (default 1); a weight that is not a
-    number of 0 or more is an error naming the test."""
+def _weight(marker) -> float:
+    """The points of ``@pytest.mark.weight(points)`` (default 1); a ValueError for a
+    weight that is not a number of 0 or more."""
     if marker is None:
         return 1.0
     points = marker.args[0] if marker.args else marker.kwargs.get("points")
     if isinstance(points, bool) or not isinstance(points, (int, float)) or not points >= 0:
-        raise pytest.UsageError(f"{nodeid}: weight({points!r}): the points must be a number "
-                                "of 0 or more")
+        raise ValueError(f"weight({points!r}): the points must be a number of 0 or more")
     return float(points)
 
 

@@ -186,8 +186,8 @@ def _collected(tests: Path, ran: tuple[dict | None, str]) -> dict:
     if found is None:
         raise UserError(f"{tests.name}: the tests could not run: {last}")
     if found["errors"]:
-        raise UserError(f"{tests.name}: the tests could not be collected: "
-                        f"{found['errors'][0]}")
+        error = found["errors"][0].removeprefix(f"{tests.name}: ")
+        raise UserError(f"{tests.name}: the tests could not be collected: {error}")
     if not found["tests"]:
         raise UserError(f"{tests.name}: no tests in it (pytest collects test_* functions)")
     return found
