@@ -9,7 +9,12 @@ a pytest and a supervised run of its own (marked slow).
 from __future__ import annotations
 
 import json
+import os
+import shutil
+import subprocess
+import sys
 import textwrap
+from pathlib import Path
 
 import pytest
 
@@ -18,6 +23,7 @@ from conftest import ROOT
 from springscene.batch import grading
 from springscene.batch.grade_report import message_of
 from springscene.errors import UserError
+from springscene.vpython.run.sandbox import unavailable as no_sandbox
 
 GRADING = ROOT / "examples" / "grading"
 LAB_TESTS = GRADING / "test_spring_lab.py"
@@ -298,3 +304,57 @@ def test_bad_input_is_one_line_and_exit_2(cli, tmp_path, args, message):
     assert done.returncode == 2 and done.stdout == ""
     assert done.stderr.count("\n") == 1 and "Traceback" not in done.stderr
     assert message.format(tmp=tmp_path) in done.stderr, done.stderr
+
+
+# ---- in the sandbox, and on Gradescope ------------------------------------------------------
+
+def gradescope_folders(tmp_path, program: str) -> Path:
+    """Gradescope's /autograder in ``tmp_path``: the submission (``program``, a file of
+    the grading example), the autograder's source (the tests), an empty results folder."""
+    root = tmp_path / "autograder"
+    for name in ("submission", "source", "results"):
+        (root / name).mkdir(parents=True)
+    shutil.copy(GRADING / program, root / "submission" / "lab.py")
+    shutil.copy(LAB_TESTS, root / "source")
+    return root
+
+
+needs_sandbox = pytest.mark.skipif(no_sandbox() is not None,
+                                   reason=f"no sandbox here: {no_sandbox()}")
+
+
+@needs_sandbox
+@pytest.mark.slow
+def test_run_autograder_grades_a_submission_as_gradescope_runs_it(tmp_path):
+    root = gradescope_folders(tmp_path, "spring_lab_wrong.py")
+    script = (GRADING / "run_autograder").read_text()
+    assert len(script.splitlines()) == 3
+    local = tmp_path / "run_autograder"
+    local.write_text(script.replace("/autograder/", f"{root}/"))
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}{os.pathsep}{os.environ['PATH']}"}
+    done = subprocess.run(["sh", str(local)], cwd=root, env=env, capture_output=True,
+                          text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    data = json.loads((root / "results" / "results.json").read_text())
+    check_gradescope(data, 4)
+    assert (data["score"], data["tests"][0]["status"]) == (1.0, "failed")
+    assert "lab.py: 1 of 4 tests passed, 1/5 points" in done.stdout
+
+
+@needs_sandbox
+@pytest.mark.slow
+def test_a_sandboxed_program_cannot_read_the_tests(tmp_path):
+    root = gradescope_folders(tmp_path, "spring_lab.py")
+    tests = root / "source" / "test_spring_lab.py"
+    program = root / "submission" / "lab.py"
+    program.write_text(f"leak = open({str(tests)!r}).read()\n" + program.read_text())
+    grades = grading.grade_program(program, tests)
+    assert grades.output.startswith("the program raised FileNotFoundError: [Errno 2] No such "
+                                    f"file or directory: '{tests}' (line 1) before its first "
+                                    "frame"), grades.output
+    assert grades.score == 0 and len(grades.tests) == 4
+    # beside the tests, it reads its own file alone
+    beside = root / "source" / "lab.py"
+    beside.write_text(program.read_text())
+    assert grading.program_sandbox(beside, tests).readable == (str(beside),)
+    assert grading.program_sandbox(program, tests).readable == (str(root / "submission"),)

@@ -43,6 +43,7 @@ from ..errors import ProgramError, UserError
 from ..outputs import atomic_path, check_output
 from ..vpython.run.options import DEFAULT_FPS, RunOptions
 from ..vpython.run.runner import ProgramRaised
+from ..vpython.run.sandbox import Sandbox, own_folder, unavailable as no_sandbox
 from ..vpython.run.supervise import RunEnded, run_supervised
 
 RUN_OPTIONS = ("duration", "frames", "fps", "timeout", "max_memory")
@@ -216,7 +217,7 @@ def grade_program(program: Path, tests: Path, *, sandbox: bool = True,
     if not program.is_file():
         raise UserError(f"{program}: no such program file")
     options = {**test_options(tests), **{k: v for k, v in overrides.items() if v is not None}}
-    box = program_sandbox(program) if sandbox else None
+    box = program_sandbox(program, Path(tests)) if sandbox else None
     with tempfile.TemporaryDirectory(prefix="springscene-grade-") as folder:
         recording, failure, said = record(program, Path(folder) / "run.jsonl", options, box)
         grades = grade(recording, tests, program, failure=failure)
@@ -225,24 +226,30 @@ def grade_program(program: Path, tests: Path, *, sandbox: bool = True,
     return grades
 
 
-def program_sandbox(program: Path):
-    """The sandbox a graded program runs in: it reads its own folder and nothing else of
-    the machine's files; where none can be made, a one-line :class:`UserError`."""
-    raise UserError("no sandbox can be made here yet: grade with --no-sandbox")
+def program_sandbox(program: Path, tests: Path) -> Sandbox:
+    """The sandbox a graded program runs in: it reads its own folder (its file alone
+    where that folder holds the tests, or is a home folder) and nothing else of the
+    machine's files; where none can be made, a one-line :class:`UserError`."""
+    why = no_sandbox()
+    if why is not None:
+        raise UserError(f"no sandbox for the program here: {why} (--no-sandbox runs it "
+                        "without one)")
+    readable = own_folder(program)
+    if any(Path(tests).resolve().is_relative_to(path) for path in readable):
+        readable = (str(program.resolve()),)
+    return Sandbox(readable=readable)
 
 
-def record(program: Path, out: Path, options: dict, sandbox=None
+def record(program: Path, out: Path, options: dict, sandbox: Sandbox | None = None
            ) -> tuple[Path | None, str | None, str]:
     """``program`` run to the recording ``out`` alone: (the recording, None, how the run
     ended). A program that raised after its first frame gives its recording up to the
     error; one that left none gives (None, why in one line, what it said)."""
     run_options = RunOptions(duration=options.get("duration"), frames=options.get("frames"),
                              fps=options.get("fps", DEFAULT_FPS), page=False)
-    limits = {"timeout": options.get("timeout"), "max_memory": options.get("max_memory")}
-    if sandbox is not None:
-        limits["sandbox"] = sandbox
     try:
-        result = run_supervised(program, out, run_options, **limits)
+        result = run_supervised(program, out, run_options, timeout=options.get("timeout"),
+                                max_memory=options.get("max_memory"), sandbox=sandbox)
     except ProgramRaised as exc:
         line = _raised_line(exc)
         if exc.result is None:
