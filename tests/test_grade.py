@@ -343,12 +343,13 @@ def test_run_autograder_grades_a_submission_as_gradescope_runs_it(tmp_path):
 
 @needs_sandbox
 @pytest.mark.slow
-def test_a_sandboxed_program_cannot_read_the_tests(tmp_path):
+def test_a_sandboxed_program_cannot_read_the_tests(tmp_path, monkeypatch):
     root = gradescope_folders(tmp_path, "spring_lab.py")
     tests = root / "source" / "test_spring_lab.py"
     program = root / "submission" / "lab.py"
     program.write_text(f"leak = open({str(tests)!r}).read()\n" + program.read_text())
-    grades = grading.grade_program(program, tests)
+    monkeypatch.chdir(root)                        # (a program named from here)
+    grades = grading.grade_program(Path("submission/lab.py"), tests)
     assert grades.output.startswith("the program raised FileNotFoundError: [Errno 2] No such "
                                     f"file or directory: '{tests}' (line 1) before its first "
                                     "frame"), grades.output

@@ -247,8 +247,9 @@ def record(program: Path, out: Path, options: dict, sandbox: Sandbox | None = No
     error; one that left none gives (None, why in one line, what it said)."""
     run_options = RunOptions(duration=options.get("duration"), frames=options.get("frames"),
                              fps=options.get("fps", DEFAULT_FPS), page=False)
-    try:
-        result = run_supervised(program, out, run_options, timeout=options.get("timeout"),
+    try:                          # (absolute: the sandbox's working folder is not ours)
+        result = run_supervised(program.resolve(), out, run_options,
+                                timeout=options.get("timeout"),
                                 max_memory=options.get("max_memory"), sandbox=sandbox)
     except ProgramRaised as exc:
         line = _raised_line(exc)
