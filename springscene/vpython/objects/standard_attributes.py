@@ -267,6 +267,8 @@ class standard(_Base):
 
     def _recolour_trail(self) -> None:
         if self._trail is not None:
+            if not is_lenient():        # GlowScript: the points made so far keep their colour
+                trails.keep_colours(self._trail)
             self._trail.color = self._trail_color
 
     trail_type = Linked(one_of("curve", "points"))

@@ -14,6 +14,8 @@ Web VPython and VPython 7 build an object's trail in the browser (GlowScript,
 - With ``interval = n`` (a ``points`` trail has ``interval = 1`` unless given), every
   n-th change of ``pos`` (in place too: ``ball.pos.x = 1``) adds a point, the first
   change always when the trail is empty; renders add nothing.
+- A point takes the trail's colour when it is added: a new ``trail_color`` colours the
+  points to come (the trail's colour is the object's when it was made, or ``trail_color``).
 - ``make_trail = False`` stops the trail (its points stay); ``True`` again starts a new
   piece at the object. ``clear_trail()`` empties every piece, and the next render or
   counted change starts afresh.
@@ -95,6 +97,19 @@ def _pps_allows(obj) -> bool:
         return False
     obj.__dict__["_pps_last"] = now
     return True
+
+
+def keep_colours(trail) -> None:
+    """Before ``trail_color`` changes: GlowScript gives each point the trail's colour when
+    it is added, so the points made so far keep the colour they were made in."""
+    old = trail._color
+    kept = False
+    for p in trail._pts:
+        if "color" not in p:
+            p["color"] = vector(old)
+            kept = True
+    if kept:
+        trail._changed()
 
 
 def restarted(obj) -> None:
