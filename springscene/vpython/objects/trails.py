@@ -5,7 +5,8 @@ Web VPython and VPython 7 build an object's trail in the browser (GlowScript,
 ``lib/glow/WebGLRenderer.js``: the render loop's ``cvs.trails``). Their rules, kept here:
 
 - At construction the trail takes the object's colour (or ``trail_color``) and, when the
-  program gave ``pos``, that point. Without ``pos`` it waits until ``pos`` is set.
+  program gave ``pos``, that point (and that setting of ``pos`` is the first change an
+  ``interval`` counts). Without ``pos`` it waits until ``pos`` is set.
 - A ``curve`` trail with no ``interval`` gets a point at each render (60 a second, and
   each video frame, which shows a render: :mod:`..core.runtime`): the object's position
   when it moved since the last such point, at most ``pps`` a second, never while the
@@ -30,6 +31,8 @@ The objects whose trail follows the renders are listed here (:func:`follow`);
 
 from __future__ import annotations
 
+from fractions import Fraction
+
 from ..core import runtime
 from ..core.vectors import vector
 
@@ -53,9 +56,10 @@ def begin(obj, pos_given: bool) -> None:
     now, with the given ``pos`` as its first point."""
     obj._pos_set = pos_given
     obj._new_trail_piece()
+    follow(obj)
     if pos_given:
         obj._trail.append(vector(obj._pos))
-    follow(obj)
+        pos_changed(obj)    # GlowScript then sets pos from the arguments: counted for interval
 
 
 def pos_changed(obj) -> None:
@@ -93,7 +97,7 @@ def _pps_allows(obj) -> bool:
         return True
     now = runtime.current().clock
     last = obj.__dict__.get("_pps_last")
-    if last is not None and now - last < 1 / pps:
+    if last is not None and now - last < 1 / Fraction(pps):
         return False
     obj.__dict__["_pps_last"] = now
     return True
