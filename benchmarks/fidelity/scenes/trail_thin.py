@@ -2,7 +2,11 @@
 # tube 4 range/width thick) and where their points go. VPython 7 builds the trail in the
 # browser (primitives.js makeTrail, the render loop): a point at each render, so what
 # the program does to pos between renders is never seen; no point at a pos not given.
-# The loop is slow (rate(15)) so that every iteration reaches a render.
+# The loop is slow (rate(15)) so that most iterations reach a render: headless Chromium on
+# SwiftShader, on a loaded machine, still goes without an update now and then (its own
+# trail points, read from GlowScript: 39 of the 47 a render each step would give, other
+# steps missing at each run, at rate(15) and at rate(6) alike), so real VPython's trail
+# has a few longer chords where springscene's, a point each render, follows the path.
 from vpython import *
 scene.width, scene.height = 480, 320
 scene.range = 3
