@@ -179,6 +179,8 @@ def test_every_video_frame_shows_the_trail_ending_at_the_object(vp):
 
 
 def test_vpython6_keeps_a_point_at_each_change(vp):
+    """VPython 6 kept the trail in Python: src/core/primitive.cpp set_pos/set_x call
+    vis/primitives.py trail_update, which appends at the first change and every n-th."""
     vectors.set_lenient(True)              # as while a VPython 6 program runs
     try:
         ball = vp.sphere(pos=vp.vector(0, 0, 0), make_trail=True)
@@ -186,6 +188,10 @@ def test_vpython6_keeps_a_point_at_each_change(vp):
         ball.pos.x = 2
         render()
         assert xs(ball) == [0, 1, 2]
+        every3 = vp.sphere(make_trail=True, interval=3)    # no pos: no point at the origin
+        for x in range(1, 8):                 # vis/primitives.py trail_update: 1, 4, 7
+            every3.pos.x = x
+        assert xs(every3) == [1, 4, 7]
     finally:
         vectors.set_lenient(False)
 

@@ -140,8 +140,9 @@ class standard(_Base):
         if self._compact:
             compact(self)
         if self._make_trail:
-            if is_lenient():        # VPython 6: the trail starts where the object is
-                self._add_trail_point()
+            if is_lenient():        # VPython 6: the trail starts at the pos given
+                if pos_given:
+                    self._add_trail_point()
             else:
                 trails.begin(self, pos_given)
 
@@ -199,9 +200,9 @@ class standard(_Base):
             return
         if not is_lenient():          # Web VPython, VPython 7: :mod:`.trails`
             trails.pos_changed(self)
-        else:                         # VPython 6: at each change
+        else:                         # VPython 6 (trail_update): changes 1, 1 + n, 1 + 2n...
             self._pos_sets += 1
-            if (self._interval <= 0 or self._pos_sets % self._interval == 0) \
+            if (self._interval <= 0 or (self._pos_sets - 1) % self._interval == 0) \
                     and self._pps_allows():
                 self._add_trail_point()
 
