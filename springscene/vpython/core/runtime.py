@@ -65,20 +65,13 @@ class Timeline:
     def seconds(self) -> float:
         return float(self.clock)
 
-    def _frame_due(self, end: Fraction) -> bool:
-        """A video frame is to be taken before the clock reaches ``end``."""
-        return Fraction(self.frames, self.fps) < end and \
-            (self.max_frames is None or self.frames < self.max_frames)
-
     def advance(self, span: Fraction) -> None:
         """Show the scene as it is for ``span`` program seconds."""
         end = self.clock + span
         self.last_span = span
-        if self.on_render is not None and (Fraction(self.renders, RENDERS_PER_SECOND) < end
-                                           or self._frame_due(end)):
+        if self.on_render is not None and Fraction(self.renders, RENDERS_PER_SECOND) < end:
             # a browser renders 60 times a second; while the program waits nothing moves,
-            # so the renders due in this span see one scene: one call stands for them all.
-            # A video frame shows a render too (a trail ends at its object in every frame).
+            # so the renders due in this span see one scene: one call stands for them all
             self.on_render()
             self.renders = math.ceil(end * RENDERS_PER_SECOND)
         taken = 0

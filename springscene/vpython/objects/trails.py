@@ -7,11 +7,13 @@ Web VPython and VPython 7 build an object's trail in the browser (GlowScript,
 - At construction the trail takes the object's colour (or ``trail_color``) and, when the
   program gave ``pos``, that point (and that setting of ``pos`` is the first change an
   ``interval`` counts). Without ``pos`` it waits until ``pos`` is set.
-- A ``curve`` trail with no ``interval`` gets a point at each render (60 a second, and
-  each video frame, which shows a render: :mod:`..core.runtime`): the object's position
-  when it moved since the last such point, at most ``pps`` a second, never while the
-  object is invisible. Positions in between are never seen, so the trail is the path
-  sampled at the renders, and ends at the object in every picture.
+- A ``curve`` trail with no ``interval`` gets a point at each render (60 a program second,
+  :mod:`..core.runtime`; not at each video frame: a ``retain`` then keeps as many seconds
+  of trail as in VPython at any frame rate): the object's position when it moved since
+  the last such point, at most ``pps`` a second, never while the object is invisible.
+  Positions in between are never seen: the trail is the path sampled at the renders. A
+  video frame between two renders shows the object up to 1/60 s of its motion past the
+  trail's end (in a browser, the picture of the last render shows both there).
 - With ``interval = n`` (a ``points`` trail has ``interval = 1`` unless given), every
   n-th change of ``pos`` (in place too: ``ball.pos.x = 1``) adds a point, the first
   change always when the trail is empty; renders add nothing.
