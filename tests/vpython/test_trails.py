@@ -95,6 +95,11 @@ def test_retain_keeps_the_newest_render_points(vp):
         ball.pos.x = x
         render()
     assert xs(ball) == [7, 8, 9]
+    ball.retain = 5                           # from the next point on
+    for x in range(10, 13):
+        ball.pos.x = x
+        render()
+    assert xs(ball) == [8, 9, 10, 11, 12]
 
 
 def test_make_trail_toggled_and_clear_trail(vp):

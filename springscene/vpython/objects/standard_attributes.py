@@ -266,6 +266,11 @@ class standard(_Base):
                 trails.follow(self)
         self._make_trail = value
 
+    def _retain_trail(self) -> None:
+        """GlowScript's ``retain`` setter: the running trail keeps that many from its next point."""
+        if self._trail is not None:
+            self._trail.retain = self._retain
+
     def _recolour_trail(self) -> None:
         if self._trail is not None:
             if not is_lenient():        # GlowScript: the points made so far keep their colour
@@ -278,7 +283,7 @@ class standard(_Base):
     trail_radius = Linked(float, get=lambda self: (
         self._trail_radius if self._trail_radius is not None else 0.1 * self._size.y))
     interval = Linked(int)
-    retain = Linked(int)
+    retain = Linked(int, then="_retain_trail")
     pps = Linked()
     pickable = Linked(bool)
 
