@@ -25,6 +25,7 @@ from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
 from .batch_cli import add_batch_command, run_batch_command
 from .compare import add_compare_command, run_compare
+from .grade_cli import add_grade_command, run_grade
 from .starters import add_init_command, run_init, version
 from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
@@ -63,6 +64,7 @@ def _build_parser() -> argparse.ArgumentParser:
     add_batch_command(sub)
     add_compare_command(sub)
     add_init_command(sub)
+    add_grade_command(sub)
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
     s.add_argument("--backend", default="auto", choices=BACKENDS)
     return p
@@ -250,6 +252,8 @@ def _run(args: argparse.Namespace) -> int:
         return run_init(args)
     if args.command == "batch":
         return run_batch_command(args)
+    if args.command == "grade":
+        return run_grade(args)
     _check_out_is_not_input(args)
     if args.command == "vpython":
         return _vpython(args)
