@@ -15,6 +15,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+from ..batch.grading import test_options
 from ..batch.runs import DEFAULT_DURATION, DEFAULT_TIMEOUT, Settings, run_batch
 from ..errors import UserError
 from ..progress import tqdm_class
@@ -42,7 +43,8 @@ def add_batch_command(sub) -> None:
                    "of here (pip install 'springscene[dask]')")
     s.add_argument("--duration", type=float,
                    help=f"program seconds to film (default: the tests' vpython_program "
-                   f"marker's, else {DEFAULT_DURATION:g})")
+                   f"marker's, or with --tests until the program ends (at most 10 s); "
+                   f"else {DEFAULT_DURATION:g})")
     s.add_argument("--fps", type=int,
                    help=f"frames per program second (default: the tests' marker's, else "
                    f"{DEFAULT_FPS})")
@@ -70,16 +72,19 @@ def add_batch_command(sub) -> None:
 
 def settings_of(args: argparse.Namespace, jobs: int) -> Settings:
     """The flags as a batch's settings, checked before anything is written."""
-    asked = _asked(args)
-    options = RunOptions(duration=asked["duration"], fps=asked["fps"], backend=args.backend,
-                         antialias=not args.draft, quality=args.quality)
+    marked = test_options(args.tests) if args.tests is not None else {}
+    asked = _asked(args, marked)
+    frames = marked.get("frames") if args.duration is None else None
+    options = RunOptions(duration=None if frames else asked["duration"], frames=frames,
+                         fps=asked["fps"], backend=args.backend, antialias=not args.draft,
+                         quality=args.quality)
     suffix = f".{args.format}"
     with tempfile.NamedTemporaryFile(suffix=".py") as probe:     # the options alone checked
         check_request(probe.name, Path(tempfile.gettempdir()) / f"check{suffix}", options)
     timeout = asked["timeout"]
     if not (timeout > 0 and timeout != float("inf")):
         raise UserError(f"--timeout {timeout:g}: must be a number of seconds above 0")
-    max_memory = args.max_memory
+    max_memory = args.max_memory or marked.get("max_memory")
     if max_memory is None:
         max_memory = size_text(max(memory_limit(None) // jobs, 256 << 20)) \
             if machine_memory() else None
@@ -89,11 +94,13 @@ def settings_of(args: argparse.Namespace, jobs: int) -> Settings:
                     max_memory=max_memory, sandbox=not args.no_sandbox, tests=args.tests)
 
 
-def _asked(args: argparse.Namespace) -> dict:
+def _asked(args: argparse.Namespace, marked: dict) -> dict:
     """Duration, frames per second and timeout: the flag's, else what the tests' marker
-    asks (``vpython_program("lab.py", duration=5, fps=100)``), else the batch's default."""
-    marked = {}
-    defaults = {"duration": DEFAULT_DURATION, "fps": DEFAULT_FPS, "timeout": DEFAULT_TIMEOUT}
+    asks (``vpython_program("lab.py", duration=5, fps=100)``), else the batch's default;
+    with tests, the run they would have (``springscene grade``'s: to the program's end, at
+    most 10 s) rather than the batch's 3 s."""
+    defaults = {"duration": None if args.tests is not None else DEFAULT_DURATION,
+                "fps": DEFAULT_FPS, "timeout": DEFAULT_TIMEOUT}
     return {key: getattr(args, key) if getattr(args, key) is not None else
             marked.get(key, default) for key, default in defaults.items()}
 

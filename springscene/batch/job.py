@@ -39,6 +39,7 @@ from ..vpython.run.options import RunOptions
 from ..vpython.run.runner import ProgramExit, ProgramRaised, ProgramResult
 from ..vpython.run.sandbox import Sandbox
 from ..vpython.run.supervise import EXIT_TIMEOUT, RunEnded, run_supervised
+from .grading import grade
 from .plan import RESULT
 
 LOG = "log.txt"
@@ -118,6 +119,8 @@ def main() -> int:
             _thumbnail(video, folder / THUMBNAIL)
         except (OSError, subprocess.SubprocessError) as exc:      # (the row says the rest)
             print(f"springscene: no thumbnail: {exc}", file=sys.stderr)
+    if job["tests"] is not None:
+        row.update(_graded(job, folder, row))
     row["files"] = {kind: name for kind, name in (
         ("video", video.name), ("page", f"{job['stem']}.html"),
         ("recording", f"{job['stem']}.jsonl.gz"), ("thumbnail", THUMBNAIL), ("log", LOG))
@@ -126,6 +129,21 @@ def main() -> int:
     with atomic_path(folder / RESULT) as tmp:
         tmp.write_text(json.dumps(row, indent=1, sort_keys=True) + "\n")
     return 0
+
+
+def _graded(job: dict, folder: Path, row: dict) -> dict:
+    """The tests run on the program's recording (up to its error, if it raised); with
+    none, every test that asks for the run fails with how the run ended."""
+    recording = folder / f"{job['stem']}.jsonl.gz"
+    failure = None if recording.is_file() else f"the program's run: {row['status']}" + (
+        f" ({row['detail']})" if row.get("detail") else "")
+    grades = grade(recording if failure is None else None, Path(job["tests"]),
+                   Path(job["program"]), failure=failure)
+    if grades.error:
+        print(f"springscene: grading: {grades.error}", file=sys.stderr)
+    return {"score": grades.score, "max_score": grades.max_score, "grade_error": grades.error,
+            "tests": [{"name": t.name, "passed": t.passed, "message": t.message,
+                       "score": t.score, "max_score": t.max_score} for t in grades.tests]}
 
 
 def _run(job: dict) -> dict:

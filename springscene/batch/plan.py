@@ -11,7 +11,8 @@ submission per student, either way an instructor's download gives them:
   VPython (``vpython``, ``visual``) or starts with Web VPython's header (``alice/lab2``).
   A submission may read its own folder (a data file, a module of its own).
 
-Deeper folders and files that are not ``.py`` are left alone. Each program's files go
+Deeper folders, files that are not ``.py`` and pytest's files (``test_*.py``,
+``conftest.py``: the instructor's tests beside the programs) are left alone. Each program's files go
 into a folder of the output named as the program (``DIR/alice/``, ``DIR/alice/lab2/``):
 its video ``NAME.EXT``, interactive page ``NAME.html``, recording ``NAME.jsonl.gz``,
 ``thumbnail.png``, ``log.txt`` and ``result.json``, the row of the summary. A rerun
@@ -95,7 +96,7 @@ def _in_folder(folder: Path) -> list[Program]:
         entries = sorted(folder.iterdir())
     except OSError as exc:
         raise UserError(f"{folder}: cannot read this folder ({exc.strerror})") from None
-    programs = [_one_file(p) for p in entries if p.suffix.lower() == ".py" and p.is_file()]
+    programs = [_one_file(p) for p in entries if _program_file(p)]
     for sub in (p for p in entries if p.is_dir() and not p.name.startswith((".", "__"))):
         programs.extend(_student(sub))
     return programs
@@ -104,7 +105,7 @@ def _in_folder(folder: Path) -> list[Program]:
 def _student(folder: Path) -> list[Program]:
     """A student's folder: its one program, or each of its VPython programs."""
     try:
-        files = sorted(p for p in folder.iterdir() if p.suffix.lower() == ".py" and p.is_file())
+        files = sorted(p for p in folder.iterdir() if _program_file(p))
     except OSError:
         return []
     if len(files) > 1:
@@ -113,6 +114,13 @@ def _student(folder: Path) -> list[Program]:
     if len(files) == 1:
         return [Program(student, files[0], (folder,), folder=True)]
     return [Program(f"{student}/{_key_part(p.stem)}", p, (folder,), folder=True) for p in files]
+
+
+def _program_file(path: Path) -> bool:
+    """A ``.py`` file that is not pytest's (``test_*.py``, ``conftest.py``: an
+    instructor's tests kept beside the programs)."""
+    return path.suffix.lower() == ".py" and path.is_file() and \
+        not path.name.startswith("test_") and path.name != "conftest.py"
 
 
 def _looks_like_vpython(path: Path) -> bool:
