@@ -314,3 +314,53 @@ def test_where_no_sandbox_can_be_made_batch_says_why_and_writes_nothing(cli, tmp
     assert proc.stderr == ("springscene: error: no sandbox here: bwrap is not installed "
                            "(--no-sandbox runs the programs without one)\n")
     assert not (tmp_path / "out").exists()
+
+
+GRADING = """import pytest
+
+pytestmark = pytest.mark.vpython_program("lab.py", duration=0.5, fps=25)
+
+
+@pytest.fixture
+def run(vpython_run):
+    return vpython_run()
+
+
+def test_it_draws_a_sphere(run):
+    assert run.objects.of_kind("sphere"), "there is no sphere"
+
+
+@pytest.mark.weight(2)
+def test_the_ball_moves_right(run):
+    x = run["ball"].pos[:, 0]
+    assert x[-1] > x[0] + 0.1, f"the ball went from x = {x[0]:.2f} m to {x[-1]:.2f} m"
+"""
+
+
+def test_tests_grade_each_programs_recording(tmp_path):
+    programs = make_class(tmp_path / "class", ["alice", "bob", "dave"])
+    (tmp_path / "grading.py").write_text(GRADING)
+    proc = run_cli("batch", programs, "--out-dir", tmp_path / "out", "--tests",
+                   tmp_path / "grading.py", "--max-memory", "600M", *SANDBOX)
+    assert proc.returncode == 0, proc.stderr
+    rows = rows_of(tmp_path / "out")
+    assert rows["alice"]["frames"] == 12                    # the marker's 0.5 s at 25 fps
+    assert (rows["alice"]["score"], rows["alice"]["max_score"]) == (3.0, 3.0)
+    assert [t["passed"] for t in rows["alice"]["tests"]] == [True, True]
+    assert (rows["bob"]["score"], rows["bob"]["max_score"]) == (0.0, 3.0)   # (up to its error)
+    failed = {t["name"]: t["message"] for t in rows["bob"]["tests"]}
+    assert "there is no sphere" in failed["test_it_draws_a_sphere"]
+    assert rows["dave"]["score"] == 0.0 and rows["dave"]["status"] == "memory"
+    assert all("over --max-memory 600M" in t["message"] for t in rows["dave"]["tests"])
+    table = list(csv.DictReader(io.StringIO((tmp_path / "out" / "summary.csv").read_text())))
+    assert table[0]["test test_the_ball_moves_right"] == "pass"
+    assert table[1]["test test_it_draws_a_sphere"].startswith("fail: ")
+    page = (tmp_path / "out" / "index.html").read_text()
+    assert "<b>3 / 3</b>" in page and "<b>0 / 3</b>" in page and "there is no sphere" in page
+    again = run_cli("batch", programs, "--out-dir", tmp_path / "out", "--tests",
+                    tmp_path / "grading.py", "--max-memory", "600M", *SANDBOX)
+    assert "3 of 3 programs done before" in again.stderr
+    (tmp_path / "grading.py").write_text(GRADING + "\n")       # the tests changed: again
+    third = run_cli("batch", programs, "--out-dir", tmp_path / "out", "--tests",
+                    tmp_path / "grading.py", "--max-memory", "600M", *SANDBOX)
+    assert "done before" not in third.stderr and rows_of(tmp_path / "out")["alice"]["score"] == 3
