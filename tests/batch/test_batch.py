@@ -78,7 +78,7 @@ def test_each_program_has_its_row(ran):
     assert rows["carol"]["detail"] == "stopped by --timeout 20 s"
     assert rows["dave"]["status"] == "memory"
     assert rows["dave"]["detail"] == "stopped: over --max-memory 600M"
-    assert rows["dave"]["program_seconds"] == pytest.approx(0.12)
+    assert rows["dave"]["program_seconds"] <= 0.2        # (as far as it had reported)
     for name, row in rows.items():
         assert row["program"] == str(programs / f"{name}.py")
         assert row["wall_seconds"] > 0
@@ -227,8 +227,12 @@ def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
     remote, here = rows_of(tmp_path / "out"), rows_of(local)
     assert sorted(remote) == ["alice", "bob", "dave"]
     for name, row in remote.items():
-        same = {k: v for k, v in here[name].items() if k not in TIMES + ("program",)}
-        assert {k: v for k, v in row.items() if k not in TIMES + ("program",)} == same
+        # how far a program got when it was stopped is as far as it had reported by then
+        # (a report every 0.25 s): a time too
+        times = TIMES + ("program",) + (("program_seconds", "frames")
+                                         if row["status"] in ("memory", "timeout") else ())
+        same = {k: v for k, v in here[name].items() if k not in times}
+        assert {k: v for k, v in row.items() if k not in times} == same
     # (bob's page shows his traceback, which names where the program was: not the same)
     for file in ("alice/alice.mp4", "alice/alice.html", "alice/thumbnail.png", "bob/bob.mp4",
                  "bob/thumbnail.png"):
