@@ -112,24 +112,24 @@ def _view(rng: float, w: int = 900, h: int = 600):
 
 def test_chords_merged_only_within_the_pixel_bound():
     """Far away a group's chords are merged: the fewest of CHORD_STEPS whose sagitta on
-    the nearest helix's coil stays within lod.helix_px pixels (the next fewer would not);
-    near, and anti-aliased (``full``), GlowScript's 60 a coil. The batch holds that many."""
+    the nearest helix's coil stays within lod.capsule_px pixels (the next fewer would
+    not); near, or at lod.FULL, GlowScript's 60 a coil. The batch holds that many."""
     springs = [vp.helix(pos=vp.vector(x, 0, 0), axis=vp.vector(0.7, 0, 0), radius=0.15,
                         thickness=0.05) for x in range(-30, 30, 1)]
     a = helices.helix_arrays(springs)
     idx = np.arange(len(springs))
-    view = _view(40.0)
-    chords = helices.detail(a, idx, view)[0]
+    view, px = _view(40.0), lod.DEFAULT.capsule_px
+    chords = helices.capsule_chords(a, idx, view, px)
     end = a["pos"] + a["R"][:, :, 0] * a["length"][:, None]
     ppu = np.maximum(helices.pixels_per_unit(view, a["pos"], a["radius"] + a["wire"]),
                      helices.pixels_per_unit(view, end, a["radius"] + a["wire"]))
     coil_px = float(np.max(a["radius"] * ppu))
     sagitta = coil_px * (1 - math.cos(math.pi / chords))
-    assert chords < 60 and sagitta <= lod.DEFAULT.helix_px
+    assert chords < 60 and sagitta <= px
     fewer = helices.CHORD_STEPS[helices.CHORD_STEPS.index(chords) + 1]
-    assert coil_px * (1 - math.cos(math.pi / fewer)) > lod.DEFAULT.helix_px
-    assert helices.detail(a, idx, _view(1.0))[0] == 60
-    assert helices.detail(a, idx, view, full=True)[0] == 60
+    assert coil_px * (1 - math.cos(math.pi / fewer)) > px
+    assert helices.capsule_chords(a, idx, _view(1.0), px) == 60
+    assert helices.capsule_chords(a, idx, view, lod.FULL.capsule_px) == 60
     vp.scene.width, vp.scene.height = 900, 600
     vp.scene.range = 40
     r = Renderer(vp.scene, antialias=False)
@@ -138,9 +138,11 @@ def test_chords_merged_only_within_the_pixel_bound():
     assert isinstance(batch, CapsuleBatch)
     assert batch.helix_chords == {(5.0, True): chords}
     assert batch.drawn == len(springs) * 5 * chords
-    vp.scene.range = 1.5                         # zoomed in: drawn again at 60 a coil
+    vp.scene.range = 1.5                         # zoomed in: drawn again, finer
     r.frame()
-    assert batch.helix_chords == {(5.0, True): 60} and batch.drawn == len(springs) * 300
+    near = helices.capsule_chords(a, idx, r.view, px)
+    assert near > chords and batch.helix_chords == {(5.0, True): near}
+    assert batch.drawn == len(springs) * 5 * near
     r.close()
 
 

@@ -1,4 +1,4 @@
-"""Curves drawn as ray-cast capsules: a box per segment, the true tube found per pixel.
+"""Curves drawn as ray-cast capsules: a quad per segment, the true tube found per pixel.
 
 GlowScript draws every segment of a curve (and so of a trail, and a helix's chords) as
 one instance of mesh.js ``makeCurveSegment``: a 16-sided open tube from the segment's
@@ -10,26 +10,35 @@ second's along the segment and the hemisphere the second's (curve_render_vertex.
 (:func:`..geometry.meshes.tube`) that is about 130 vertices a segment: a curve of
 15,000 segments is about a million triangles rebuilt and set up every frame it moves.
 
-Here a segment is a box around that capsule (8 corners; its back faces culled, so each
-pixel runs once, on a near face no farther than the capsule: the shader says so,
-``depth_greater``, ARB_conservative_depth, and the segments are drawn nearest first, so
-the depth test turns hidden pixels away before their rays are cast), and the fragment
-shader casts the pixel's ray at the true shape:
-the cone between the two points (its near or, looking into the open first end, its
-far side) and the hemisphere on the second point; it discards a miss and writes the
-hit's depth (so it meets meshes and other capsules as a mesh would), the normal the
+Here a segment is one quad facing the camera, made in the vertex shader from the
+segment's ends and radii: on the plane of the capsule's nearest point (no farther than the
+capsule anywhere: the shader says so, ``depth_greater``, ARB_conservative_depth), along
+the segment as seen and across it, exactly as far as its two end spheres reach on screen
+(the capsule lies in their hull), so no corners are computed in numpy. The fragment
+shader casts the pixel's ray at the true shape: the cone between the two points (its
+near or, looking into the open first end, its far side) and the hemisphere on the second
+point; it discards a miss and writes the hit's depth (so it meets meshes and other capsules as a mesh would), the normal the
 mesh's would have there (the cone's, as :func:`..geometry.meshes.tube`'s sides) and
 the blended colour; VTK's light code then shades it by GlowScript's rules
 (:func:`~.materials.shade_as_glowscript`). Anti-aliased, each of the pixel's samples
 casts its own ray and the covered ones go to ``gl_SampleMask``, shading once a pixel
 as MSAA shades a mesh (as :mod:`.impostors` does for spheres).
 
-The segment's points, radii and colours reach the shader as vertex attributes of the
-box's corners (``MapDataArrayToVertexAttribute``), repeated on its 8 corners; a curve
-that turns rewrites these arrays in place and nothing else. Needs the extensions of
+A helix's chords (:func:`.helix_batches.draw_capsules`) are segments joined smoothly:
+each end but the wire's two is marked a joint (a negative radius), and given the wire's
+tangent there (``bends``). The quad then stops a little past a joint (the next chord's
+quad draws the tube beyond it: AtomicSolid's chords, shorter than the wire is thick,
+overlapped about four deep), a chord's joint on its first end holds the sphere the
+previous chord ends in (so a ray into the open end finds that, not the inside), and the
+wire is shaded round its tangent blended along the chord, as the helix mesh's normals
+are (GlowScript's straight segments show a faint facet a chord; the mesh does not).
+
+The segment's points, radii, colours and tangents reach the shader as vertex attributes
+of the quad's corners (``MapDataArrayToVertexAttribute``), written on its 4 corners in
+place; the corners themselves are fixed codes. Needs the extensions of
 :data:`.impostors.EXTENSIONS` and ARB_conservative_depth (:func:`available`); opaque,
 lit curves only (curves have no opacity here; an emissive curve keeps its mesh). A
-camera inside a segment's box sees none of that segment (its near faces are behind it).
+capsule reaching behind the near plane is drawn from a quad on the near plane.
 """
 
 from __future__ import annotations
@@ -144,9 +153,10 @@ _VS_QUAD = ("//VTK::PositionVC::Impl", """//VTK::PositionVC::Impl
   }
 """)
 
-# the ray through a point of the box (view coordinates) and its nearest hit on the capsule:
+# the ray through a point of the quad (view coordinates) and its nearest hit on the capsule:
 # hit.x the ray's parameter (or -1.0 for none), hit.y how far along the segment (0..1, 1 on
-# the hemisphere); the ray starts before the whole box when the camera is parallel
+# the hemisphere, -1 on a joint's sphere on the first end); the ray starts before the
+# whole capsule when the camera is parallel
 _FS_DECLARE = ("//VTK::Normal::Dec", """//VTK::Normal::Dec
 flat in vec4 capStartVC;
 flat in vec4 capEndVC;
@@ -159,13 +169,13 @@ flat in vec4 capDepthZ;
 flat in vec4 capDepthW;
 layout(depth_greater) out float gl_FragDepth;
 
-void capRay(vec3 onBox, out vec3 origin, out vec3 dir) {
+void capRay(vec3 onQuad, out vec3 origin, out vec3 dir) {
   if (cameraParallel != 0) {
     dir = vec3(0.0, 0.0, -1.0);
     float reach = length(capEndVC.xyz - capStartVC.xyz) + 2.0*max(capStartVC.w, capEndVC.w);
-    origin = onBox + vec3(0.0, 0.0, 2.0*reach);
+    origin = onQuad + vec3(0.0, 0.0, 2.0*reach);
   } else {
-    dir = normalize(onBox);
+    dir = normalize(onQuad);
     origin = vec3(0.0);
   }
 }

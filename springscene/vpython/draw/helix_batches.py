@@ -51,17 +51,18 @@ def draw_capsules(batch, objs, view, style, full: bool = False,
     """Put the helices ``objs`` into the capsule batch ``batch`` as GlowScript draws a
     helix: the curve through its ``coils * 60 + 1`` centre-line points, each chord a
     capsule of the wire's radius in the helix's colour (:mod:`.capsules`; its wire a true
-    circle, so only the chords have a level of detail). Drafted, a group of helices
-    small on screen gets fewer chords a coil, the fewest of
-    :data:`..geometry.helices.CHORD_STEPS` whose chords stray at most ``lod.helix_px``
-    (0.03 px by default) from the coil's circle as its nearest helix is seen
-    (:func:`..geometry.helices.detail`); ``full`` keeps 60. Every helix's chords are
-    made in one numpy pass per group; the batch's arrays are rewritten in place."""
+    circle, so only the chords have a level of detail). A group of helices small on
+    screen gets fewer chords a coil, drafted or anti-aliased: the fewest of
+    :data:`..geometry.helices.CHORD_STEPS` whose chords stray at most ``lod.capsule_px``
+    (0.1 px by default) from the coil's circle as its nearest helix is seen
+    (:func:`..geometry.helices.capsule_chords`; ``full`` is the meshes' rule, not used).
+    Every helix's chords are made in one numpy pass per group; the batch's arrays are
+    rewritten in place."""
     a = helices.helix_arrays(objs)
     batch.helix_arrays, batch.helix_chords = a, {}
     parts = []
     for shape, idx in helices.groups(a).items():
-        chords = helices.detail(a, idx, view, full, lod)[0]
+        chords = helices.capsule_chords(a, idx, view, lod.capsule_px)
         line, slope = helices.centre_lines(*shape, chords, a["pos"][idx], a["R"][idx],
                                            a["length"][idx], a["radius"][idx])
         n = line.shape[1] - 1
@@ -88,7 +89,7 @@ def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> boo
     a = batch.helix_arrays
     chords = getattr(batch, "helix_chords", None)
     if chords is not None:
-        return any(helices.detail(a, idx, view, full, lod)[0] != chords.get(shape)
+        return any(helices.capsule_chords(a, idx, view, lod.capsule_px) != chords.get(shape)
                    for shape, idx in helices.groups(a).items())
     drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
     return any(helices.detail(a, idx, view, full, lod) != drawn.get(shape)

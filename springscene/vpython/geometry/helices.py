@@ -197,6 +197,20 @@ def detail(a: dict, idx: np.ndarray, view, full: bool = False,
             steps_for(float(np.max(wire * ppu)), SIDE_STEPS, lod.helix_px * lod.side_share))
 
 
+def capsule_chords(a: dict, idx: np.ndarray, view, px: float) -> int:
+    """Chords a coil for the helices ``idx`` drawn as capsules: the fewest of
+    :data:`CHORD_STEPS` whose sagitta stays within ``px`` pixels on the coil of the
+    nearest of them, as :func:`detail` takes it (GlowScript's 60 without a view or
+    with ``px`` 0)."""
+    if view is None or px <= 0:
+        return CHORDS_PER_COIL
+    pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
+    end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
+    ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
+                     pixels_per_unit(view, end, radius + wire))
+    return steps_for(float(np.max(radius * ppu)), CHORD_STEPS, px)
+
+
 def mesh(objs, view=None, triangles: bool = True, full: bool = False,
          bounds: bool = True, arrays: dict | None = None, lod: LevelOfDetail = DEFAULT):
     """World points, normals, triangles, RGB (uint8), per-helix bounds (M, 2, 3) and the
@@ -248,5 +262,6 @@ def groups(a: dict) -> dict[tuple, np.ndarray]:
     return {shape: np.array(idx) for shape, idx in groups.items()}
 
 
-__all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "centre_lines", "helix_arrays",
+__all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "centre_lines", "capsule_chords",
+           "helix_arrays",
            "pixels_per_unit", "detail", "mesh", "groups"]
