@@ -335,6 +335,7 @@ class CapsuleBatch(Batch):
     drawn = 0             # the segments drawn in them now
     bent = False          # the wire's own tangents given (``bends``): a smooth tube
     helix_chords = None   # helices: chords a coil drawn, by shape (:mod:`.helix_batches`)
+    colours: tuple = ()   # the segments' end colours drawn (uint8), to skip rewriting them
 
     def set_segments(self, a, b, ra, rb, rgb_a, rgb_b, style: dict, view=None,
                      bends=None) -> None:
@@ -359,13 +360,14 @@ class CapsuleBatch(Batch):
             arr[:n, :, 3] = (np.asarray(r, dtype=np.float32) * np.float32(MEAN_WIDTH))[:, None]
             arr[n:self.drawn] = 0
             self.mesh.GetPointData().GetArray(name).Modified()
-        for name, rgb in (("capStartColor", rgb_a), ("capEndColor", rgb_b)):
-            rgb = np.asarray(rgb, dtype=np.float32) / np.float32(255)
-            arr = self._quads(name)
-            if not np.array_equal(arr[:n, 0], rgb) or self.drawn > n:
-                arr[:n] = rgb[:, None, :]
+        rgb_a, rgb_b = np.asarray(rgb_a), np.asarray(rgb_b)
+        if self.drawn != n or not all(map(np.array_equal, self.colours, (rgb_a, rgb_b))):
+            for name, rgb in (("capStartColor", rgb_a), ("capEndColor", rgb_b)):
+                arr = self._quads(name)
+                arr[:n] = (rgb.astype(np.float32) / np.float32(255))[:, None, :]
                 arr[n:self.drawn] = 0
                 self.mesh.GetPointData().GetArray(name).Modified()
+            self.colours = (rgb_a.copy(), rgb_b.copy())
         if bends is not None or self.bent:
             for name, t in zip(("capStartBend", "capEndBend"), bends or (0.0, 0.0)):
                 arr = self._quads(name)
@@ -377,9 +379,9 @@ class CapsuleBatch(Batch):
         self.mesh.Modified()
 
     def _quads(self, name: str) -> np.ndarray:
-        """The point array ``name`` as (segments, 4 corners, components), in place."""
-        arr = self.mesh.point_data[name]
-        return arr.reshape(self.segments, 4, -1)
+        """The point array ``name`` as (segments, 4 corners, components), in place (a
+        plain numpy view: pyvista's own ``__setitem__`` costs a millisecond a write)."""
+        return np.asarray(self.mesh.point_data[name]).reshape(self.segments, 4, -1)
 
     def _new_mesh(self, room: int, style: dict) -> None:
         from pyvista.core import PolyData  # noqa: PLC0415  heavy: pyvista
@@ -392,7 +394,7 @@ class CapsuleBatch(Batch):
         normals[:, 2] = 1.0                                   # hit's normal replaces these
         mesh.point_data["Normals"] = normals
         mesh.GetPointData().SetActiveNormals("Normals")
-        self.segments, self.drawn = room, 0
+        self.segments, self.drawn, self.colours = room, 0, ()
         self.signature = ("capsules", room)
         if self.actor is None:
             self.mesh = mesh
