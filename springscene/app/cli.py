@@ -33,6 +33,7 @@ from ..outputs import check_output, hidden_name
 from ..vpython.record import trace
 from ..vpython.record.reader import read as read_recording
 from ..vpython.run.options import FORMATS, MAX_LOD_PX
+from ..vpython.run.sandbox import Sandbox, own_folder
 from ..vpython.run.supervise import RunEnded
 from ..vpython.run.report import size_text
 
@@ -182,6 +183,9 @@ def _add_vpython_command(sub) -> None:
     s.add_argument("--max-memory", metavar="SIZE",
                    help="stop the program when it uses more memory, e.g. 500M or 2G "
                    "(exit 137; default: half the machine's)")
+    s.add_argument("--sandbox", action="store_true",
+                   help="run an untrusted program in a sandbox (bubblewrap): it reads only "
+                   "its own folder, writes only its outputs, has no network")
     s.add_argument("--lod", type=_lod_pixels, metavar="PX",
                    help="draw helices with polygons within PX pixels of the true curves, "
                    "anti-aliased too (default: 0.03 drafted and VPython's full 60 x 16 "
@@ -325,6 +329,8 @@ def _vpython(args: argparse.Namespace) -> int:
                                   page=not args.no_page, canvas_only=args.canvas_only,
                                   quality=args.quality, lod=args.lod, record=record,
                                   timeout=args.timeout, max_memory=args.max_memory,
+                                  sandbox=Sandbox(own_folder(args.program))
+                                  if args.sandbox else None,
                                   on_dialect=lambda d: said.extend(_dialect_said(args, d)))
             traced = read_recording(record or args.out) if traces else None
     except RunEnded as exc:         # os._exit, a signal, --timeout, --max-memory, sys.exit(n)
