@@ -21,8 +21,8 @@ from springscene.vpython.geometry import helices, lod
 from imagecompare import compare
 
 # Capsules against VPython's full 16-sided meshes, % of pixels off by more than 24/255
-# (measured on the scenes below and at 900 x 600): drafted 0.07-0.19 %, anti-aliased
-# 0.15-0.63 %. The capsule is the true round wire, the mesh a 16-gon whose outline strays
+# (measured on the scenes below): drafted 0.07-0.19 %, anti-aliased 0.15-0.63 %
+# (AtomicSolid at 900 x 600: 0.19 and 0.54 %; at 450 x 300: 0.25 and 1.06 %). The capsule is the true round wire, the mesh a 16-gon whose outline strays
 # up to 2 % of the wire's radius inwards: on wires several pixels thick, edge pixels flip
 # (the curves' capsules, drafted, 0.07-0.14 % on thick tubes); the helix's last chord
 # ends in VPython's hemisphere, which the mesh lacks. Mean difference: drafted up to 0.21,

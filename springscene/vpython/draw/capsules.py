@@ -115,7 +115,9 @@ _VS_IMPL = ("//VTK::Normal::Impl", """//VTK::Normal::Impl
   capStartT = (MCVCMatrix * vec4(capStartBend, 0.0)).xyz;
   capEndT = (MCVCMatrix * vec4(capEndBend, 0.0)).xyz;
   capJoinA = capStart.w < 0.0 ? 1.0 : 0.0;
-  mat4 capVCDC = MCDCMatrix * inverse(MCVCMatrix);
+  mat3 capTurn = transpose(mat3(MCVCMatrix));     // the view is a turn and a shift
+  mat4 capVCDC = MCDCMatrix * mat4(vec4(capTurn[0], 0.0), vec4(capTurn[1], 0.0),
+                                   vec4(capTurn[2], 0.0), vec4(-(capTurn * MCVCMatrix[3].xyz), 1.0));
   capDepthZ = vec4(capVCDC[0][2], capVCDC[1][2], capVCDC[2][2], capVCDC[3][2]);
   capDepthW = vec4(capVCDC[0][3], capVCDC[1][3], capVCDC[2][3], capVCDC[3][3]);
 """)
