@@ -24,6 +24,7 @@ from ..model.timeline import MAX_STEPS
 from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
 from .compare import add_compare_command, run_compare
+from .grade_cli import add_grade_command, run_grade
 from .starters import add_init_command, run_init, version
 from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
@@ -61,6 +62,7 @@ def _build_parser() -> argparse.ArgumentParser:
     _add_vpython_command(sub)
     add_compare_command(sub)
     add_init_command(sub)
+    add_grade_command(sub)
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
     s.add_argument("--backend", default="auto", choices=BACKENDS)
     return p
@@ -246,6 +248,8 @@ def _run(args: argparse.Namespace) -> int:
         return run_compare(args)
     if args.command == "init":
         return run_init(args)
+    if args.command == "grade":
+        return run_grade(args)
     _check_out_is_not_input(args)
     if args.command == "vpython":
         return _vpython(args)
