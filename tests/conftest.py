@@ -254,6 +254,7 @@ LONG_TESTS = {
     "tests/test_api.py::test_render_is_a_video_that_jupyter_shows": 1.0,
     "tests/test_api.py::test_the_documented_examples_run": 0.9,
     "tests/test_architecture.py::test_no_module_or_function_is_too_long": 0.8,
+    "tests/test_grade.py::test_springscene_run_gives_the_recordings_run_and_nothing_runs": 2.7,
     "tests/test_readers.py::test_figures_with_a_prefix": 7.8,
     "tests/test_readers.py::test_lattice_video_has_its_clock_by_default": 1.3,
     "tests/test_video_outputs.py::test_a_full_disk_is_one_line_exit_1_and_nothing_left": 2.0,

@@ -405,3 +405,13 @@ def test_where_no_sandbox_can_be_made_the_flag_says_why_in_one_line(course, cli,
         assert list(course["out"].iterdir()) == []
     finally:
         sandboxing.unavailable.cache_clear()
+
+
+def test_a_program_named_by_a_relative_path_runs_in_the_sandbox(course, monkeypatch):
+    """The child starts in the program's folder inside the sandbox, so the program it is
+    given is the absolute path, whatever the working folder outside."""
+    (course["alice"] / "prog.py").write_text(TINY)
+    monkeypatch.chdir(course["room"])
+    result = run_supervised(Path("alice") / "prog.py", Path("out") / "alice.png", RunOptions(),
+                            sandbox=Sandbox(("alice",)))
+    assert result.frames >= 1 and (course["out"] / "alice.png").is_file()

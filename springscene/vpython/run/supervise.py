@@ -112,7 +112,9 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
             # the child writes every file in the private folder; they move out when whole
             child_options = options if options.record is None else dataclasses.replace(
                 options, record=str(folder / Path(options.record).name))
-            request = {"program": str(path), "out": str(folder / out.name),
+            # (absolute in a sandbox: the child starts in another working folder there)
+            shown = str(path) if sandbox is None else os.path.abspath(path)
+            request = {"program": shown, "out": str(folder / out.name),
                        "options": child_options.to_request(),
                        "parent_thread": threading.get_native_id()}   # (see .lineage)
             jail = None if sandbox is None else sandbox_command(sandbox, path, folder)
