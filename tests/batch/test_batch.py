@@ -11,6 +11,7 @@ real Dask ``LocalCluster`` of two workers gives the same rows and byte-identical
 from __future__ import annotations
 
 import csv
+import importlib.util
 import io
 import json
 import os
@@ -213,10 +214,12 @@ def test_bad_input_is_one_line_exit_2_and_nothing_written(cli, tmp_path, args, m
     assert not (tmp_path / "out").exists()
 
 
+@pytest.mark.skipif(importlib.util.find_spec("distributed") is None,
+                    reason="Dask's distributed is not installed (the test extra has it)")
 def test_a_cluster_gives_the_same_rows_and_videos(ran, tmp_path):
     """Through a real Dask LocalCluster of two workers: the program's bytes go to a
     worker, its files come back into DIR as from the local run."""
-    distributed = pytest.importorskip("distributed")
+    import distributed  # noqa: PLC0415  heavy: distributed (in the test extra)
     _, local, _, _ = ran
     programs = make_class(tmp_path / "class", ["alice", "bob", "dave"])
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
