@@ -91,7 +91,7 @@ color:#777;border-radius:3px}
 .detail{font-family:monospace;font-size:.85em;margin:.3em 0;word-break:break-word}
 .numbers,.links{color:#555;font-size:.85em;margin:.2em 0}
 .grade{margin-top:.3em;font-size:.85em}.pass{color:#2e7d32}.fail{color:#c62828}
-ul{margin:.2em 0;padding-left:1.1em}
+ul{margin:.2em 0;padding-left:0;list-style:none}
 """
 
 
