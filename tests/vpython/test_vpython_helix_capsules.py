@@ -111,38 +111,43 @@ def _view(rng: float, w: int = 900, h: int = 600):
 
 
 def test_chords_merged_only_within_the_pixel_bound():
-    """Far away a group's chords are merged: the fewest of CHORD_STEPS whose sagitta on
-    the nearest helix's coil stays within lod.capsule_px pixels (the next fewer would
-    not); near, or at lod.FULL, GlowScript's 60 a coil. The batch holds that many."""
-    springs = [vp.helix(pos=vp.vector(x, 0, 0), axis=vp.vector(0.7, 0, 0), radius=0.15,
+    """Far away a helix's chords are merged: the fewest of CHORD_STEPS whose sagitta on
+    its coil stays within lod.capsule_px pixels (the next fewer would not), each helix
+    its own (a group drawn together takes its nearest's); near, or at lod.FULL,
+    GlowScript's 60 a coil. The batch holds each helix's chords."""
+    springs = [vp.helix(pos=vp.vector(x, 0, -abs(x)), axis=vp.vector(0.7, 0, 0), radius=0.15,
                         thickness=0.05) for x in range(-30, 30, 1)]
     a = helices.helix_arrays(springs)
     idx = np.arange(len(springs))
-    view, px = _view(40.0), lod.DEFAULT.capsule_px
-    chords = helices.capsule_chords(a, idx, view, px)
+    view, px = _view(15.0), lod.DEFAULT.capsule_px
+    each = helices.capsule_chords_each(a, idx, view, px)
     end = a["pos"] + a["R"][:, :, 0] * a["length"][:, None]
     ppu = np.maximum(helices.pixels_per_unit(view, a["pos"], a["radius"] + a["wire"]),
                      helices.pixels_per_unit(view, end, a["radius"] + a["wire"]))
-    coil_px = float(np.max(a["radius"] * ppu))
-    sagitta = coil_px * (1 - math.cos(math.pi / chords))
-    assert chords < 60 and sagitta <= px
-    fewer = helices.CHORD_STEPS[helices.CHORD_STEPS.index(chords) + 1]
-    assert coil_px * (1 - math.cos(math.pi / fewer)) > px
+    coil_px = a["radius"] * ppu
+    assert np.all(coil_px * (1 - np.cos(np.pi / each)) <= px)
+    fewer = np.array([helices.CHORD_STEPS[helices.CHORD_STEPS.index(c) + 1] for c in each])
+    assert np.all(coil_px * (1 - np.cos(np.pi / fewer)) > px)
+    assert len(set(each)) > 1 and each.max() < 60
+    chords = helices.capsule_chords(a, idx, view, px)
+    assert chords == each.max() == each[np.argmax(coil_px)]
     assert helices.capsule_chords(a, idx, _view(1.0), px) == 60
     assert helices.capsule_chords(a, idx, view, lod.FULL.capsule_px) == 60
     vp.scene.width, vp.scene.height = 900, 600
-    vp.scene.range = 40
+    vp.scene.range = 15
     r = Renderer(vp.scene, antialias=False)
     r.frame()
     batch = [b for k, b in r._batches.items() if k[0] == "helix"][0]
     assert isinstance(batch, CapsuleBatch)
-    assert batch.helix_chords == {(5.0, True): chords}
-    assert batch.drawn == len(springs) * 5 * chords
+    drawn = batch.helix_chords[(5.0, True)]
+    assert batch.helix_chords.keys() == {(5.0, True)}
+    assert np.array_equal(drawn, helices.capsule_chords_each(a, idx, r.view, px))
+    assert batch.drawn == 5 * drawn.sum()
     vp.scene.range = 1.5                         # zoomed in: drawn again, finer
     r.frame()
-    near = helices.capsule_chords(a, idx, r.view, px)
-    assert near > chords and batch.helix_chords == {(5.0, True): near}
-    assert batch.drawn == len(springs) * 5 * near
+    near = helices.capsule_chords_each(a, idx, r.view, px)
+    assert near.max() > chords and np.array_equal(batch.helix_chords[(5.0, True)], near)
+    assert batch.drawn == 5 * near.sum()
     r.close()
 
 

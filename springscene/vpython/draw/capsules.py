@@ -259,10 +259,11 @@ _FS_DEPTH = ("//VTK::Depth::Impl", """
       vec3 sOrigin, sDir;
       capRay(interpolateAtSample(vertexVCVSOutput, i).xyz, sOrigin, sDir);
       vec2 sAt = capHit(sOrigin, sDir);
-      if (sAt.x >= 0.0) {
-        coverage |= (1 << i);
-        if (capAt.x < 0.0) { capAt = sAt; capOrigin = sOrigin; capDir = sDir; }
-      }
+      coverage |= sAt.x >= 0.0 ? (1 << i) : 0;
+      bool first = sAt.x >= 0.0 && capAt.x < 0.0;
+      capOrigin = first ? sOrigin : capOrigin;
+      capDir = first ? sDir : capDir;
+      capAt = first ? sAt : capAt;
     }
   }
   if (coverage == 0) { discard; }
@@ -340,7 +341,7 @@ class CapsuleBatch(Batch):
     segments = 0          # the quads the mesh has room for
     drawn = 0             # the segments drawn in them now
     bent = False          # the wire's own tangents given (``bends``): a smooth tube
-    helix_chords = None   # helices: chords a coil drawn, by shape (:mod:`.helix_batches`)
+    helix_chords = None   # helices: each one's chords a coil drawn, by shape (:mod:`.helix_batches`)
     colours: tuple = ()   # the segments' end colours drawn (uint8), to skip rewriting them
 
     def set_segments(self, a, b, ra, rb, rgb_a, rgb_b, style: dict, view=None,

@@ -51,35 +51,41 @@ def draw_capsules(batch, objs, view, style, full: bool = False,
     """Put the helices ``objs`` into the capsule batch ``batch`` as GlowScript draws a
     helix: the curve through its ``coils * 60 + 1`` centre-line points, each chord a
     capsule of the wire's radius in the helix's colour (:mod:`.capsules`; its wire a true
-    circle, so only the chords have a level of detail). A group of helices small on
-    screen gets fewer chords a coil, drafted or anti-aliased: the fewest of
+    circle, so only the chords have a level of detail). A helix small on screen gets
+    fewer chords a coil, drafted or anti-aliased: the fewest of
     :data:`..geometry.helices.CHORD_STEPS` whose chords stray at most ``lod.capsule_px``
-    (0.1 px by default) from the coil's circle as its nearest helix is seen
-    (:func:`..geometry.helices.capsule_chords`; ``full`` is the meshes' rule, not used).
-    Every helix's chords are made in one numpy pass per group; the batch's arrays are
-    rewritten in place."""
+    (0.1 px by default) from its coil's circle as seen
+    (:func:`..geometry.helices.capsule_chords_each`; ``full`` is the meshes' rule, not
+    used; ``batch.helix_chords``: each shape's helices' chords a coil). The chords are
+    made in one numpy pass per shape and count; the batch's arrays are rewritten in place."""
     a = helices.helix_arrays(objs)
     batch.helix_arrays, batch.helix_chords = a, {}
     parts = []
     for shape, idx in helices.groups(a).items():
-        chords = helices.capsule_chords(a, idx, view, lod.capsule_px)
-        line, slope = helices.centre_lines(*shape, chords, a["pos"][idx], a["R"][idx],
-                                           a["length"][idx], a["radius"][idx])
-        n = line.shape[1] - 1
-        rgb = np.clip(np.rint(a["color"][idx] * 255), 0, 255).astype(np.uint8)
-        wire = np.repeat(a["wire"][idx][:, None], n, axis=1)
-        joined = -wire                 # a joint's radius negative (:mod:`.capsules`)
-        parts.append((line[:, :-1].reshape(-1, 3), line[:, 1:].reshape(-1, 3),
-                      np.concatenate([wire[:, :1], joined[:, 1:]], axis=1).ravel(),
-                      np.concatenate([joined[:, :-1], wire[:, -1:]], axis=1).ravel(),
-                      np.repeat(rgb, n, axis=0),
-                      slope[:, :-1].reshape(-1, 3), slope[:, 1:].reshape(-1, 3)))
-        batch.helix_chords[shape] = chords
+        each = helices.capsule_chords_each(a, idx, view, lod.capsule_px)
+        for chords in np.unique(each)[::-1]:
+            parts.append(_chords(a, shape, idx[each == chords], int(chords)))
+        batch.helix_chords[shape] = each
     if not parts:
         batch.hide()
         return
     start, end, r_start, r_end, rgb, t_start, t_end = (np.concatenate(c) for c in zip(*parts))
     batch.set_segments(start, end, r_start, r_end, rgb, rgb, style, view, (t_start, t_end))
+
+
+def _chords(a: dict, shape: tuple, idx: np.ndarray, chords: int) -> tuple:
+    """The capsules of the helices ``idx`` of one ``shape``, ``chords`` a coil: their
+    ends, radii (a joint's negative), colours and the wire's tangents at the ends."""
+    line, slope = helices.centre_lines(*shape, chords, a["pos"][idx], a["R"][idx],
+                                       a["length"][idx], a["radius"][idx])
+    n = line.shape[1] - 1
+    rgb = np.clip(np.rint(a["color"][idx] * 255), 0, 255).astype(np.uint8)
+    wire = np.repeat(a["wire"][idx][:, None], n, axis=1)
+    joined = -wire                 # a joint's radius negative (:mod:`.capsules`)
+    return (line[:, :-1].reshape(-1, 3), line[:, 1:].reshape(-1, 3),
+            np.concatenate([wire[:, :1], joined[:, 1:]], axis=1).ravel(),
+            np.concatenate([joined[:, :-1], wire[:, -1:]], axis=1).ravel(),
+            np.repeat(rgb, n, axis=0), slope[:, :-1].reshape(-1, 3), slope[:, 1:].reshape(-1, 3))
 
 
 def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> bool:
@@ -89,7 +95,8 @@ def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> boo
     a = batch.helix_arrays
     chords = getattr(batch, "helix_chords", None)
     if chords is not None:
-        return any(helices.capsule_chords(a, idx, view, lod.capsule_px) != chords.get(shape)
+        return any(not np.array_equal(helices.capsule_chords_each(a, idx, view, lod.capsule_px),
+                                      chords.get(shape))
                    for shape, idx in helices.groups(a).items())
     drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
     return any(helices.detail(a, idx, view, full, lod) != drawn.get(shape)

@@ -198,17 +198,25 @@ def detail(a: dict, idx: np.ndarray, view, full: bool = False,
 
 
 def capsule_chords(a: dict, idx: np.ndarray, view, px: float) -> int:
-    """Chords a coil for the helices ``idx`` drawn as capsules: the fewest of
-    :data:`CHORD_STEPS` whose sagitta stays within ``px`` pixels on the coil of the
-    nearest of them, as :func:`detail` takes it (GlowScript's 60 without a view or
-    with ``px`` 0)."""
+    """Chords a coil for the helices ``idx`` drawn as capsules together: the most of
+    :func:`capsule_chords_each` (the nearest helix's), as :func:`detail` takes it."""
+    return int(np.max(capsule_chords_each(a, idx, view, px)))
+
+
+def capsule_chords_each(a: dict, idx: np.ndarray, view, px: float) -> np.ndarray:
+    """Chords a coil for each of the helices ``idx`` drawn as capsules: the fewest of
+    :data:`CHORD_STEPS` whose sagitta stays within ``px`` pixels on its coil as seen
+    (:func:`..lod.steps_for`, for each; GlowScript's 60 without a view or with ``px`` 0)."""
+    idx = np.asarray(idx)
     if view is None or px <= 0:
-        return CHORDS_PER_COIL
+        return np.full(len(idx), CHORDS_PER_COIL)
     pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
     end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
     ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
                      pixels_per_unit(view, end, radius + wire))
-    return steps_for(float(np.max(radius * ppu)), CHORD_STEPS, px)
+    steps = np.array(CHORD_STEPS)
+    within = (radius * ppu)[:, None] * (1 - np.cos(np.pi / steps))[None, :] <= px
+    return steps[np.maximum(within.sum(axis=1) - 1, 0)]
 
 
 def mesh(objs, view=None, triangles: bool = True, full: bool = False,
@@ -263,5 +271,6 @@ def groups(a: dict) -> dict[tuple, np.ndarray]:
 
 
 __all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "centre_lines", "capsule_chords",
+           "capsule_chords_each",
            "helix_arrays",
            "pixels_per_unit", "detail", "mesh", "groups"]
