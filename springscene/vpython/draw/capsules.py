@@ -39,6 +39,8 @@ place; the corners themselves are fixed codes. Needs the extensions of
 :data:`.impostors.EXTENSIONS` and ARB_conservative_depth (:func:`available`); opaque,
 lit curves only (curves have no opacity here; an emissive curve keeps its mesh). A
 capsule reaching behind the near plane is drawn from a quad on the near plane.
+The rays are cast from the eye: a perspective camera's, the only one the renderer makes
+(VPython has no parallel projection; the quads would be placed for one, the rays not).
 """
 
 from __future__ import annotations
@@ -170,7 +172,9 @@ _VS_QUAD = ("//VTK::PositionVC::Impl", """//VTK::PositionVC::Impl
 # segment comes worked out from the vertex shader (``capAxis``: the axis's direction and
 # length; ``capConeK``: the cone's taper k and 1 + k^2), and the solve has no branches:
 # llvmpipe runs a branch's both sides under a mask for a block of pixels anyway, so both
-# roots of each shape are found and the nearest kept by selects
+# roots of each shape are found and the nearest kept by selects. Every ray starts at the
+# eye (the view's origin: the renderer's camera is a perspective one, as VPython's), so
+# what depends on the segment alone is worked out once a pixel, not once a sample
 _FS_DECLARE = ("//VTK::Normal::Dec", """//VTK::Normal::Dec
 flat in vec4 capStartVC;
 flat in vec4 capEndVC;
@@ -184,17 +188,6 @@ flat in vec4 capDepthW;
 flat in vec4 capAxis;
 flat in vec2 capConeK;
 layout(depth_greater) out float gl_FragDepth;
-
-void capRay(vec3 onQuad, out vec3 origin, out vec3 dir) {
-  if (cameraParallel != 0) {
-    dir = vec3(0.0, 0.0, -1.0);
-    float reach = capAxis.w + 2.0*max(capStartVC.w, capEndVC.w);
-    origin = onQuad + vec3(0.0, 0.0, 2.0*reach);
-  } else {
-    dir = normalize(onQuad);
-    origin = vec3(0.0);
-  }
-}
 
 // the nearer of the roots ``t`` kept (``ok`` 1.0) as (t, its index), or 1e30
 vec2 capNearer(vec2 t, vec2 ok) {
@@ -212,8 +205,9 @@ float capSphere(vec3 rel, vec3 dir, float r, vec3 side) {
   return capNearer(t, ok).x;
 }
 
-// ``dir`` a unit vector
-vec2 capHit(vec3 origin, vec3 dir) {
+// the ray from the eye along ``dir``, a unit vector
+vec2 capHit(vec3 dir) {
+  vec3 origin = vec3(0.0);
   vec3 w = capAxis.xyz;
   float len = capAxis.w, k = capConeK.x;
   // the cone: |perp(p - a)| = ra + k (p - a).w, for 0 <= (p - a).w <= len
@@ -249,26 +243,23 @@ vec2 capHit(vec3 origin, vec3 dir) {
 # sample's (shaded at a sample throughout, AtomicSolid's highlights move: 1.4 % of pixels
 # off by more than 24/255 against the meshes, not 0.5 %)
 _FS_DEPTH = ("//VTK::Depth::Impl", """
-  vec3 capOrigin, capDir;
-  capRay(vertexVCVSOutput.xyz, capOrigin, capDir);
-  vec2 capAt = capHit(capOrigin, capDir);
+  vec3 capDir = normalize(vertexVCVSOutput.xyz);
+  vec2 capAt = capHit(capDir);
   int coverage = capAt.x >= 0.0 ? -1 : 0;
   if (gl_NumSamples > 1) {
     coverage = 0;
     for (int i = 0; i < gl_NumSamples; ++i) {
-      vec3 sOrigin, sDir;
-      capRay(interpolateAtSample(vertexVCVSOutput, i).xyz, sOrigin, sDir);
-      vec2 sAt = capHit(sOrigin, sDir);
+      vec3 sDir = normalize(interpolateAtSample(vertexVCVSOutput, i).xyz);
+      vec2 sAt = capHit(sDir);
       coverage |= sAt.x >= 0.0 ? (1 << i) : 0;
       bool first = sAt.x >= 0.0 && capAt.x < 0.0;
-      capOrigin = first ? sOrigin : capOrigin;
       capDir = first ? sDir : capDir;
       capAt = first ? sAt : capAt;
     }
   }
   if (coverage == 0) { discard; }
   gl_SampleMask[0] = coverage;
-  vec3 capPoint = capOrigin + capAt.x*capDir;
+  vec3 capPoint = capAt.x*capDir;
   vertexVC = vec4(capPoint, 1.0);
   float capZ = dot(capDepthZ, vertexVC), capW = dot(capDepthW, vertexVC);
   gl_FragDepth = clamp(0.5*(capZ/capW) + 0.5, 0.0, 1.0);
