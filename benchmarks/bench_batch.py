@@ -47,7 +47,7 @@ except ImportError:                   # the Dask path is measured only where it 
 SECONDS, TIMEOUT, MAX_MEMORY = 3, 120, "1G"
 # each program's run, single or in the batch; --timeout is set in main
 RUN_OPTIONS = ["--duration", str(SECONDS), "--max-memory", MAX_MEMORY]
-SAMPLE = 0.05               # s between two samples of a process tree's memory
+SAMPLE = 0.1                # s between two samples of a process tree's memory (one takes ~6 ms)
 HEADROOM = 200 * 2 ** 20    # the memory target's allowance over jobs x the largest run
 STATUS = {0: "ran", 1: "error", 124: "timeout", 137: "memory"}
 _REACHED = re.compile(r"([-+.\deE]+) s of program time")
@@ -169,6 +169,7 @@ def cluster_compare(folder: Path, out: Path, jobs: int, local: list) -> str | No
     videos; None when ``distributed`` is not importable."""
     if LocalCluster is None:
         return None
+    os.environ["PYTHONPATH"] = environment()["PYTHONPATH"]     # the workers' springscene
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster:
         wall, _, rows = batch_run(folder, out / "cluster", jobs, "--scheduler",
