@@ -50,7 +50,8 @@ RUN_OPTIONS = ["--duration", str(SECONDS), "--max-memory", MAX_MEMORY]
 SAMPLE = 0.1                # s between two samples of a process tree's memory (one takes ~6 ms)
 HEADROOM = 200 * 2 ** 20    # the memory target's allowance over jobs x the largest run
 STATUS = {0: "ran", 1: "error", 124: "timeout", 137: "memory"}
-_REACHED = re.compile(r"([-+.\deE]+) s of program time")
+_REACHED = re.compile(r"([-+.\deE]+) s of program time|at t = ([-+.\deE]+) s")
+_ERROR = re.compile(r"^\w+(Error|Exception|Interrupt|Exit)\b.*", re.MULTILINE)
 # the time fields of a row, which differ between two runs of the same program
 TIMES = {"wall_seconds", "started", "finished", "seconds", "peak_memory"}
 
@@ -61,10 +62,13 @@ def springscene(*args: str) -> list[str]:
             "sys.exit(main())", *args]
 
 
+CHECKOUT = [ROOT]           # the springscene measured: this checkout, or --checkout's
+
+
 def environment() -> dict:
-    """This checkout's springscene first on the path of every process started."""
+    """The measured springscene first on the path of every process started."""
     env = dict(os.environ)
-    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(ROOT), env.get("PYTHONPATH")]))
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(CHECKOUT[0]), env.get("PYTHONPATH")]))
     return env
 
 
@@ -128,10 +132,12 @@ def single_runs(programs: list[Path], out: Path) -> list[dict]:
                         str(folder / f"{program.stem}.jsonl.gz"), *RUN_OPTIONS),
             folder / "log.txt")
         text = (folder / "log.txt").read_text(errors="replace")
-        reached = _REACHED.findall(text)
+        reached = [float(a or b) for a, b in _REACHED.findall(text)]
+        error = _ERROR.search(text[text.rfind("Traceback"):]) if "Traceback" in text else None
         rows.append({"program": program.name, "status": STATUS.get(status, f"exit {status}"),
-                     "program_seconds": float(reached[-1]) if reached else None,
-                     "wall": wall, "peak": peak, "last_line": _last_line(text)})
+                     "program_seconds": reached[-1] if reached else None,
+                     "wall": wall, "peak": peak,
+                     "last_line": error[0] if error else _last_line(text)})
         print(f"  {program.name}: {rows[-1]['status']}, {wall:.1f} s, "
               f"{peak / 2 ** 20:.0f} MiB", flush=True)
     return rows
@@ -221,7 +227,10 @@ def main() -> None:
                         "takes it whole)")
     parser.add_argument("--keep", type=Path, help="a folder to keep the outputs in")
     parser.add_argument("--single-only", action="store_true", help="the single runs alone")
+    parser.add_argument("--checkout", type=Path, default=ROOT,
+                        help="the springscene checkout to measure (default: this one)")
     args = parser.parse_args()
+    CHECKOUT[0] = args.checkout.resolve()
     RUN_OPTIONS.extend(["--timeout", f"{args.timeout:g}"])
     with tempfile.TemporaryDirectory() as tmp:
         out = args.keep or Path(tmp)
