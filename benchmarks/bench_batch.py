@@ -58,8 +58,9 @@ TIMES = {"wall_seconds", "started", "finished", "seconds", "peak_memory"}
 
 def springscene(*args: str) -> list[str]:
     """The command line of ``springscene ARGS`` with this checkout's springscene."""
-    return [sys.executable, "-c", "import sys; from springscene.app.signals import main; "
-            "sys.exit(main())", *args]
+    # (not the working folder first on the path: the measured checkout is)
+    return [sys.executable, "-c", "import sys; sys.path.pop(0); "
+            "from springscene.app.signals import main; sys.exit(main())", *args]
 
 
 CHECKOUT = [ROOT]           # the springscene measured: this checkout, or --checkout's
@@ -185,9 +186,13 @@ def cluster_compare(folder: Path, out: Path, jobs: int, local: list) -> str | No
     videos = sorted((out / "batch").rglob("*.mp4"))
     unlike = [v.name for v in videos
               if v.read_bytes() != (out / "cluster" / v.relative_to(out / "batch")).read_bytes()]
-    return (f"the cluster's batch: {wall:.1f} s; rows differing but for times: "
-            f"{len(differ)} of {len(rows)} {differ if differ else ''}; videos not "
-            f"byte-identical: {len(unlike)} of {len(videos)} {unlike if unlike else ''}")
+    return (f"the cluster's batch (a 2-worker LocalCluster): {wall:.1f} s; rows differing "
+            f"but for times: {len(differ)} of {len(rows)}{_listed(differ)}; videos not "
+            f"byte-identical: {len(unlike)} of {len(videos)}{_listed(unlike)}")
+
+
+def _listed(names: list[str]) -> str:
+    return f" ({', '.join(names)})" if names else ""
 
 
 def manifest(folder: Path) -> dict[str, dict]:
