@@ -176,7 +176,10 @@ def cluster_compare(folder: Path, out: Path, jobs: int, local: list) -> str | No
     videos; None when ``distributed`` is not importable."""
     if LocalCluster is None:
         return None
-    os.environ["PYTHONPATH"] = environment()["PYTHONPATH"]     # the workers' springscene
+    # the measured springscene for the workers and for the scheduler, here, which unpickles
+    # the tasks
+    os.environ["PYTHONPATH"] = environment()["PYTHONPATH"]
+    sys.path.insert(0, str(CHECKOUT[0]))
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                       dashboard_address=None) as cluster:
         wall, _, rows = batch_run(folder, out / "cluster", jobs, "--scheduler",
@@ -184,11 +187,15 @@ def cluster_compare(folder: Path, out: Path, jobs: int, local: list) -> str | No
     local_rows = {_name(row): _untimed(row) for row in local}
     differ = [_name(row) for row in rows if _untimed(row) != local_rows.get(_name(row))]
     videos = sorted((out / "batch").rglob("*.mp4"))
-    unlike = [v.name for v in videos
-              if v.read_bytes() != (out / "cluster" / v.relative_to(out / "batch")).read_bytes()]
+    unlike = [video.name for video in videos
+              if not _same_bytes(video, out / "cluster" / video.relative_to(out / "batch"))]
     return (f"the cluster's batch (a 2-worker LocalCluster): {wall:.1f} s; rows differing "
             f"but for times: {len(differ)} of {len(rows)}{_listed(differ)}; videos not "
             f"byte-identical: {len(unlike)} of {len(videos)}{_listed(unlike)}")
+
+
+def _same_bytes(one: Path, other: Path) -> bool:
+    return other.is_file() and one.read_bytes() == other.read_bytes()
 
 
 def _listed(names: list[str]) -> str:
@@ -261,9 +268,10 @@ def main() -> None:
                 print(f"  peak memory of its tree {peak / 2 ** 20:.0f} MiB against {args.jobs} x "
                       f"{what} ({big / 2 ** 20:.0f} MiB) + 200 MiB = {allowed / 2 ** 20:.0f} MiB: "
                       f"{peak / allowed:.2f}x the target")
+        report_programs(singles, batch_rows, manifest(out / "class"))
+        if not args.single_only:
             line = cluster_compare(out / "class", out, args.jobs, batch_rows)
             print(line or "the Dask cluster: distributed is not importable here: not measured")
-        report_programs(singles, batch_rows, manifest(out / "class"))
 
 
 if __name__ == "__main__":
