@@ -262,6 +262,9 @@ def main() -> None:
             wall, peak, batch_rows = batch_run(out / "class", out / "batch", args.jobs)
             print(f"springscene batch --jobs {args.jobs}: {wall:.1f} s, {wall / total:.2f}x the "
                   f"sum of the single runs (target 0.6x); {uptime()}")
+            own = sum(row.get("wall_seconds") or 0 for row in batch_rows)
+            print(f"  its programs' own wall times sum to {own:.1f} s, {own / total:.2f}x their "
+                  f"single runs (each slowed by sharing the cores); {own / wall:.2f} at once")
             for what, rows in (("the largest run", singles), ("the largest that ran", ran)):
                 big = max(row["peak"] for row in rows)
                 allowed = args.jobs * big + HEADROOM
