@@ -87,6 +87,98 @@ _COVERAGE = ("  if (d < 0.0) { discard; }", """
 """)
 COVERAGE_RULES = (_COVERAGE,)
 
+# VPython's point (GlowScript's ``simple_sphere``, mesh.js ``makeSphere(0.5, 8)``) is a
+# convex polyhedron: 8 bands of latitude between its poles on y, 8 sectors of longitude
+# from the x and z axes and their diagonals, its vertices on the circumscribed sphere.
+# Folded into one sector (|x|, |z|, ordered) a point's distance along the sector's middle,
+# divided by cos(pi/8), and its |y| meet the faces of that sector as the edges of a
+# regular 16-gon of unit circumradius whose vertices are at the poles: the gauge (1 on
+# the surface, less inside) is the largest of four dot products. A ray hits the
+# polyhedron where the least gauge along it is at most 1 (the gauge is convex along a
+# line: its point nearest the centre first, else halved by the slope's sign); the hit is
+# where the gauge first reaches 1 (Newton's steps from the circumscribed sphere), and its
+# normal is the hit's direction from the centre, which is the mesh's: its vertex normals
+# are its vertices' directions, interpolated linearly on a flat face.
+_POINT_DECLARE = r"""
+float pointGauge(vec3 p) {
+  float a = abs(dot(p, pointAxisX));
+  float b = abs(dot(p, pointAxisZ));
+  float y = abs(dot(p, pointAxisY));
+  float rho = max(a, b) + min(a, b)*0.41421356;
+  vec4 e = rho*vec4(0.19509032, 0.55557023, 0.83146961, 0.98078528)
+         + y*vec4(0.98078528, 0.83146961, 0.55557023, 0.19509032);
+  return max(max(e.x, e.y), max(e.z, e.w))*1.01959115;
+}
+// the ray o + t dir (o and t in radii from the centre): (t, gauge) of its point of least
+// gauge, or of its point nearest the centre where that is inside; gauge 2: no point in
+// the circumscribed sphere
+vec2 pointNearest(vec3 o, vec3 dir) {
+  float tm = -dot(o, dir);
+  vec3 q = o + tm*dir;
+  float qq = dot(q, q);
+  if (qq >= 1.0) { return vec2(tm, 2.0); }
+  float g = pointGauge(q);
+  if (g <= 1.0) { return vec2(tm, g); }
+  float chord = sqrt(1.0 - qq);
+  float lo = tm - chord;
+  float hi = tm + chord;
+  for (int k = 0; k < 12 && g > 1.0; ++k) {
+    float mid = 0.5*(lo + hi);
+    float eps = 1e-4*(hi - lo);
+    float g1 = pointGauge(o + (mid - eps)*dir);
+    float g2 = pointGauge(o + (mid + eps)*dir);
+    if (g1 < g2) { hi = mid; } else { lo = mid; }
+    g = min(g, min(g1, g2));
+    tm = mid;
+  }
+  return vec2(tm, g);
+}
+// where the ray o + t dir enters the polyhedron, or (it misses) the point of least gauge
+// brought onto it along its direction from the centre
+vec3 pointHit(vec3 o, vec3 dir) {
+  vec2 near = pointNearest(o, dir);
+  if (near.y > 1.0) { return (o + near.x*dir)/near.y; }
+  float tc = -dot(o, dir);
+  vec3 q = o + tc*dir;
+  float t = tc - sqrt(max(1.0 - dot(q, q), 0.0));
+  for (int k = 0; k < 4; ++k) {
+    float g = pointGauge(o + t*dir) - 1.0;
+    float slope = (g + 1.0 - pointGauge(o + (t - 1e-3)*dir))*1e3;
+    if (g <= 1e-5 || slope >= 0.0) { break; }
+    t = min(t - g/slope, near.x);
+  }
+  return o + t*dir;
+}
+"""
+# the pixel's samples tested against the polyhedron (as :data:`COVERAGE_RULES` against
+# the sphere), and its hit's depth and normal in place of the sphere's
+_POINT_COVERAGE = ("  if (d < 0.0) { discard; }", """
+  int coverage = 0;
+  for (int i = 0; i < gl_NumSamples; ++i) {
+    vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
+    vec3 sampleDir = normalize(sampleVC);
+    vec3 samplePos = vec3(0.0);
+    if (cameraParallel != 0) {
+      sampleDir = vec3(0.0, 0.0, -1.0);
+      samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
+    else if (length(sampleVC) > radiusVCVSOutput*3.0) {
+      samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
+    samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
+    if (pointNearest(samplePos, sampleDir).y <= 1.0) { coverage |= (1 << i); }
+  }
+  if (coverage == 0) { discard; }
+  gl_SampleMask[0] = coverage;
+""")
+_POINT_SURFACE = ("""  float t = (-b - invertedDepth*sqrt(d))*0.5;
+  normalVCVSOutput = normalize(EyePos + t*EyeDir);
+  vertexVC.xyz = normalVCVSOutput*radiusVCVSOutput + centerVCVSOutput;""", """
+  vec3 hitP = pointHit(EyePos, EyeDir);
+  normalVCVSOutput = normalize(hitP);
+  vertexVC.xyz = hitP*radiusVCVSOutput + centerVCVSOutput;""")
+POINT_RULES = (_POINT_COVERAGE, _POINT_SURFACE)
+POINT_AXES = ("pointAxisX", "pointAxisY", "pointAxisZ")
+
+
 _available: list[bool] = []    # one answer a process: it renders with one backend
 
 
@@ -149,7 +241,7 @@ class SphereImpostors(Batch):
         radius = np.asarray(radius) * area
         starts = range(CHUNK, len(pos), CHUNK)
         while len(self.chunks) < len(starts):
-            self.chunks.append(SphereImpostors(self.window, self.key, flush=True))
+            self.chunks.append(type(self)(self.window, self.key, flush=True))
         self._set_chunk(pos[:CHUNK], radius[:CHUNK], rgb[:CHUNK], style)
         for chunk, s in zip(self.chunks, starts):
             chunk._set_chunk(pos[s:s + CHUNK], radius[s:s + CHUNK], rgb[s:s + CHUNK], style)
@@ -201,13 +293,46 @@ class SphereImpostors(Batch):
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
 
 
+class PointImpostors(SphereImpostors):
+    """VPython's points (:data:`POINT_RULES`): the true 8 x 8 polyhedron of their mesh
+    ray-cast in the sphere that circumscribes it; :meth:`set_axes` gives the world's axes
+    as the camera sees them (the polyhedron keeps the world's orientation)."""
+
+    axes = np.eye(3)                    # the world's x, y, z (columns) in view coordinates
+
+    def set_axes(self, view_rotation: np.ndarray) -> None:
+        """The camera's rotation, world to view (3 x 3): the polyhedron's axes for it."""
+        for part in (self, *self.chunks):
+            part.axes = np.asarray(view_rotation, dtype=float)
+            if part.actor is not None:
+                part._set_axes()
+
+    def _set_axes(self) -> None:
+        uniforms = self.actor.GetShaderProperty().GetFragmentCustomUniforms()
+        for name, column in zip(POINT_AXES, self.axes.T):
+            uniforms.SetUniform3f(name, [float(v) for v in column])
+
+    def _shade(self) -> None:
+        shade_as_glowscript(self.actor, False)
+        shader = self.actor.GetShaderProperty()
+        shader.AddFragmentShaderReplacement(*DECLARE[:1], True, DECLARE[1], False)
+        # after the uniforms' declarations (VTK's, of :attr:`axes`), before main
+        shader.AddFragmentShaderReplacement("//VTK::Output::Dec", True,
+                                            "//VTK::Output::Dec\n" + _POINT_DECLARE, False)
+        for original, replacement in POINT_RULES:
+            shader.AddFragmentShaderReplacement(original, False, replacement, False)
+        self._set_axes()
+
+
 class SphereBatch(InstancedBatch):
     """Opaque spheres of one look: the small ones impostors (:attr:`impostors`), the
     others instances of VPython's 30-slice mesh."""
 
+    impostor_class = SphereImpostors
+
     def __init__(self, window, key: tuple) -> None:
         super().__init__(window, key)
-        self.impostors = SphereImpostors(window, key)
+        self.impostors = self.impostor_class(window, key)
         self.parts = (self.impostors,)
 
     @property
@@ -236,5 +361,11 @@ class SphereBatch(InstancedBatch):
         self.signature = ("spheres", template_key, int(small.sum()))
 
 
-__all__ = ["SphereBatch", "SphereImpostors", "available", "small", "round_spheres",
-           "COVERAGE_RULES", "CHUNK", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]
+class PointBatch(SphereBatch):
+    """VPython's points of one look, every one ray-cast (:class:`PointImpostors`)."""
+
+    impostor_class = PointImpostors
+
+
+__all__ = ["PointBatch", "PointImpostors", "SphereBatch", "SphereImpostors", "available", "small", "round_spheres",
+           "COVERAGE_RULES", "POINT_RULES", "CHUNK", "EQUAL_AREA", "EXTENSIONS", "MAX_SLICES"]
