@@ -100,71 +100,98 @@ COVERAGE_RULES = (_COVERAGE,)
 # normal is the hit's direction from the centre, which is the mesh's: its vertex normals
 # are its vertices' directions, interpolated linearly on a flat face.
 _POINT_DECLARE = r"""
-float pointGauge(vec3 p) {
-  float a = abs(dot(p, pointAxisX));
-  float b = abs(dot(p, pointAxisZ));
-  float y = abs(dot(p, pointAxisY));
-  float rho = max(a, b) + min(a, b)*0.41421356;
-  vec4 e = rho*vec4(0.19509032, 0.55557023, 0.83146961, 0.98078528)
-         + y*vec4(0.98078528, 0.83146961, 0.55557023, 0.19509032);
-  return max(max(e.x, e.y), max(e.z, e.w))*1.01959115;
+// the gauge at p and its rate along dir
+vec2 pointGauge(vec3 p, vec3 dir) {
+  vec3 f = vec3(dot(p, pointAxisX), dot(p, pointAxisZ), dot(p, pointAxisY));
+  vec3 df = vec3(dot(dir, pointAxisX), dot(dir, pointAxisZ), dot(dir, pointAxisY))*sign(f);
+  f = abs(f);
+  vec2 hi = f.x >= f.y ? vec2(f.x, df.x) : vec2(f.y, df.y);
+  vec2 lo = f.x >= f.y ? vec2(f.y, df.y) : vec2(f.x, df.x);
+  vec2 rho = hi + lo*0.41421356;
+  const vec4 S = vec4(0.19509032, 0.55557023, 0.83146961, 0.98078528);
+  vec4 e = rho.x*S + f.z*S.wzyx;
+  vec4 de = rho.y*S + df.z*S.wzyx;
+  vec2 g = e.x >= e.y ? vec2(e.x, de.x) : vec2(e.y, de.y);
+  vec2 h = e.z >= e.w ? vec2(e.z, de.z) : vec2(e.w, de.w);
+  return (g.x >= h.x ? g : h)*1.01959115;
 }
 // the ray o + t dir (o and t in radii from the centre): (t, gauge) of its point of least
-// gauge, or of its point nearest the centre where that is inside; gauge 2: no point in
-// the circumscribed sphere
-vec2 pointNearest(vec3 o, vec3 dir) {
+// gauge, found by cutting planes (the gauge is convex and piecewise linear along the ray:
+// the tangents at the two ends of a bracket meet below its least value), or, with
+// ``inside``, of a point of it inside (gauge 0: in the inscribed sphere, of radius
+// 0.9087) or gauge 2 if it misses the circumscribed sphere (without, such a ray is
+// brought inside it, scaled about the centre, and its gauge and t scaled back)
+vec2 pointNearest(vec3 o, vec3 dir, bool inside) {
   float tm = -dot(o, dir);
   vec3 q = o + tm*dir;
   float qq = dot(q, q);
-  if (qq >= 1.0) { return vec2(tm, 2.0); }
-  float g = pointGauge(q);
-  if (g <= 1.0) { return vec2(tm, g); }
-  float chord = sqrt(1.0 - qq);
-  float lo = tm - chord;
-  float hi = tm + chord;
-  for (int k = 0; k < 12 && g > 1.0; ++k) {
-    float mid = 0.5*(lo + hi);
-    float eps = 1e-4*(hi - lo);
-    float g1 = pointGauge(o + (mid - eps)*dir);
-    float g2 = pointGauge(o + (mid + eps)*dir);
-    if (g1 < g2) { hi = mid; } else { lo = mid; }
-    g = min(g, min(g1, g2));
-    tm = mid;
+  float scale = 1.0;
+  if (qq >= 1.0) {
+    if (inside) { return vec2(tm, 2.0); }
+    scale = 0.99*inversesqrt(qq);
+    o *= scale;
+    tm *= scale;
+    q *= scale;
+    qq = 0.9801;
   }
-  return vec2(tm, g);
+  if (inside && qq <= 0.8256) { return vec2(tm, 0.0); }
+  vec2 here = pointGauge(q, dir);
+  float chord = sqrt(1.0 - qq);
+  vec3 lo = vec3(tm - chord, pointGauge(o + (tm - chord)*dir, dir));
+  vec3 hi = vec3(tm + chord, pointGauge(o + (tm + chord)*dir, dir));
+  vec2 best = vec2(tm, here.x);
+  for (int k = 0; k < 4; ++k) {
+    if (here.y > 0.0) { hi = vec3(tm, here); } else { lo = vec3(tm, here); }
+    float slopes = lo.z - hi.z;
+    if (slopes >= 0.0 || (inside && best.y <= 1.0)) { break; }
+    tm = (hi.y - lo.y + lo.z*lo.x - hi.z*hi.x)/slopes;
+    float floor = lo.y + lo.z*(tm - lo.x);
+    if (floor > 1.0 && inside) { break; }              // the least gauge is above 1
+    here = pointGauge(o + tm*dir, dir);
+    if (here.x < best.y) { best = vec2(tm, here.x); }
+    if (best.y - floor < 1e-4) { break; }              // the least gauge found
+  }
+  return best/scale;
 }
-// where the ray o + t dir enters the polyhedron, or (it misses) the point of least gauge
-// brought onto it along its direction from the centre
-vec3 pointHit(vec3 o, vec3 dir) {
-  vec2 near = pointNearest(o, dir);
+// where the ray o + t dir, of least gauge ``near`` (pointNearest's), enters the
+// polyhedron: one Newton's step from the circumscribed sphere onto the plane of the face
+// there (the gauge is convex and piecewise linear along the ray), exact but where the
+// entry is on the next face; where the ray misses, its point of least gauge brought
+// onto the surface along its direction from the centre
+vec3 pointHit(vec3 o, vec3 dir, vec2 near) {
   if (near.y > 1.0) { return (o + near.x*dir)/near.y; }
   float tc = -dot(o, dir);
   vec3 q = o + tc*dir;
   float t = tc - sqrt(max(1.0 - dot(q, q), 0.0));
-  for (int k = 0; k < 4; ++k) {
-    float g = pointGauge(o + t*dir) - 1.0;
-    float slope = (g + 1.0 - pointGauge(o + (t - 1e-3)*dir))*1e3;
-    if (g <= 1e-5 || slope >= 0.0) { break; }
-    t = min(t - g/slope, near.x);
-  }
+  vec2 g = pointGauge(o + t*dir, dir);
+  if (g.x > 1.0 && g.y < 0.0) { t -= (g.x - 1.0)/g.y; }
   return o + t*dir;
 }
 """
 # the pixel's samples tested against the polyhedron (as :data:`COVERAGE_RULES` against
 # the sphere), and its hit's depth and normal in place of the sphere's
 _POINT_COVERAGE = ("  if (d < 0.0) { discard; }", """
-  int coverage = 0;
-  for (int i = 0; i < gl_NumSamples; ++i) {
-    vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
-    vec3 sampleDir = normalize(sampleVC);
-    vec3 samplePos = vec3(0.0);
-    if (cameraParallel != 0) {
-      sampleDir = vec3(0.0, 0.0, -1.0);
-      samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
-    else if (length(sampleVC) > radiusVCVSOutput*3.0) {
-      samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
-    samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
-    if (pointNearest(samplePos, sampleDir).y <= 1.0) { coverage |= (1 << i); }
+  vec2 pointCentre = pointNearest(EyePos, EyeDir, gl_NumSamples == 1);
+  int coverage = pointCentre.y <= 1.0 ? 1 : 0;
+  if (gl_NumSamples > 1) {
+    // the outline's reach in the direction of the pixel's ray from the centre: a
+    // sample's ray passing the centre nearer than that is covered
+    vec3 qc = EyePos - dot(EyePos, EyeDir)*EyeDir;
+    float reach = dot(qc, qc) < 1e-6 ? 1.0 : length(qc)/pointCentre.y;
+    coverage = 0;
+    for (int i = 0; i < gl_NumSamples; ++i) {
+      vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
+      vec3 sampleDir = normalize(sampleVC);
+      vec3 samplePos = vec3(0.0);
+      if (cameraParallel != 0) {
+        sampleDir = vec3(0.0, 0.0, -1.0);
+        samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
+      else if (length(sampleVC) > radiusVCVSOutput*3.0) {
+        samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
+      samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
+      vec3 qs = samplePos - dot(samplePos, sampleDir)*sampleDir;
+      if (dot(qs, qs) <= reach*reach) { coverage |= (1 << i); }
+    }
   }
   if (coverage == 0) { discard; }
   gl_SampleMask[0] = coverage;
@@ -172,10 +199,40 @@ _POINT_COVERAGE = ("  if (d < 0.0) { discard; }", """
 _POINT_SURFACE = ("""  float t = (-b - invertedDepth*sqrt(d))*0.5;
   normalVCVSOutput = normalize(EyePos + t*EyeDir);
   vertexVC.xyz = normalVCVSOutput*radiusVCVSOutput + centerVCVSOutput;""", """
-  vec3 hitP = pointHit(EyePos, EyeDir);
+  vec3 hitP = pointHit(EyePos, EyeDir, pointCentre);
   normalVCVSOutput = normalize(hitP);
   vertexVC.xyz = hitP*radiusVCVSOutput + centerVCVSOutput;""")
 POINT_RULES = (_POINT_COVERAGE, _POINT_SURFACE)
+# the triangle each point is drawn on moved from the centre to the sphere's near side, so
+# every hit lies behind it (``depth_greater``, ARB_conservative_depth) and the depth test
+# turns away a hidden point's pixels before their rays are cast (the points drawn
+# nearest first)
+_POINT_NEAR_SIDE = (
+    ("  centerVCGSOutput = gl_in[0].gl_Position.xyz/gl_in[0].gl_Position.w;", False, """
+  centerVCGSOutput = gl_in[0].gl_Position.xyz/gl_in[0].gl_Position.w;
+  vec3 toEye = vec3(0.0, 0.0, 1.0);
+  if (cameraParallel == 0) { toEye = normalize(-gl_in[0].gl_Position.xyz); }
+  vec4 nearSide = gl_in[0].gl_Position + vec4(toEye*radiusVCGSOutput, 0.0);"""),
+    ("vertexVCGSOutput = gl_in[0].gl_Position + offset.x", True,
+     "vertexVCGSOutput = nearSide + offset.x"),
+    # a square of the radius's half-width (2 triangles) rather than VTK's one triangle:
+    # 4 r^2 of pixels a point rather than 5.2 r^2
+    ("layout(triangle_strip, max_vertices = 3) out;", False,
+     "layout(triangle_strip, max_vertices = 4) out;"),
+    ("offset = vec4(-1.73205*radiusVCGSOutput, -radiusVCGSOutput, 0.0, 0.0);", False,
+     "offset = vec4(-radiusVCGSOutput, -radiusVCGSOutput, 0.0, 0.0);"),
+    ("offset = vec4(1.73205*radiusVCGSOutput, -radiusVCGSOutput, 0.0, 0.0);", False,
+     "offset = vec4(radiusVCGSOutput, -radiusVCGSOutput, 0.0, 0.0);"),
+    ("offset = vec4(0.0, 2.0*radiusVCGSOutput, 0.0, 0.0);", False,
+     "offset = vec4(-radiusVCGSOutput, radiusVCGSOutput, 0.0, 0.0);"),
+    ("  EndPrimitive();", False, """
+  offset = vec4(radiusVCGSOutput, radiusVCGSOutput, 0.0, 0.0);
+  vertexVCGSOutput = nearSide + offset.x*base1 + offset.y*base2;
+  gl_Position = VCDCMatrix * vertexVCGSOutput;
+  EmitVertex();
+  EndPrimitive();"""))
+_POINT_DEPTH = ("#extension GL_ARB_conservative_depth : require\n",
+                "layout(depth_greater) out float gl_FragDepth;\n")
 POINT_AXES = ("pointAxisX", "pointAxisY", "pointAxisZ")
 
 
@@ -307,6 +364,14 @@ class PointImpostors(SphereImpostors):
             if part.actor is not None:
                 part._set_axes()
 
+    def set_spheres(self, pos, radius, rgb, style: dict, area: float = 1.0) -> None:
+        """As :meth:`SphereImpostors.set_spheres` (``area`` 1: the polyhedron is in the
+        sphere), nearest the camera of :meth:`set_axes` first."""
+        order = np.argsort(-(np.asarray(pos) @ self.axes[2]), kind="stable")
+        pos, radius, rgb = (np.asarray(x)[order] for x in (pos, radius, rgb))
+        super().set_spheres(pos, radius, rgb, style, area)
+        self.set_axes(self.axes)
+
     def _set_axes(self) -> None:
         uniforms = self.actor.GetShaderProperty().GetFragmentCustomUniforms()
         for name, column in zip(POINT_AXES, self.axes.T):
@@ -315,10 +380,14 @@ class PointImpostors(SphereImpostors):
     def _shade(self) -> None:
         shade_as_glowscript(self.actor, False)
         shader = self.actor.GetShaderProperty()
-        shader.AddFragmentShaderReplacement(*DECLARE[:1], True, DECLARE[1], False)
+        shader.AddFragmentShaderReplacement(*DECLARE[:1], True,
+                                            DECLARE[1] + _POINT_DEPTH[0], False)
         # after the uniforms' declarations (VTK's, of :attr:`axes`), before main
-        shader.AddFragmentShaderReplacement("//VTK::Output::Dec", True,
-                                            "//VTK::Output::Dec\n" + _POINT_DECLARE, False)
+        shader.AddFragmentShaderReplacement(
+            "//VTK::Output::Dec", True, "//VTK::Output::Dec\n" + _POINT_DEPTH[1]
+            + _POINT_DECLARE, False)
+        for original, every, replacement in _POINT_NEAR_SIDE:
+            shader.AddGeometryShaderReplacement(original, False, replacement, every)
         for original, replacement in POINT_RULES:
             shader.AddFragmentShaderReplacement(original, False, replacement, False)
         self._set_axes()

@@ -188,7 +188,8 @@ class Renderer:
             return (CapsuleBatch if ray_cast else _Batch)(self.window, key)
         if not (IMPOSTORS and impostors.available(self.window.ren_win)):
             return _Batch(self.window, key)
-        return (PointBatch if POINT_IMPOSTORS else SphereBatch)(self.window, key)
+        ray_cast = POINT_IMPOSTORS and capsules.available(self.window.ren_win)
+        return (PointBatch if ray_cast else SphereBatch)(self.window, key)
 
     @staticmethod
     def _instanced(key: tuple) -> bool:
@@ -363,11 +364,10 @@ class Renderer:
         small = np.zeros(len(pos), dtype=bool)
         if isinstance(batch, PointBatch):
             small = diam > 0                # a negative size: its mesh turned inside out
+            batch.impostors.set_axes(self._view_rotation())
         R = np.broadcast_to(np.eye(3), (int((~small).sum()), 3, 3))
         batch.set_spheres(point_meshes.point_sphere(), ("points", point_meshes.POINT_SLICES),
                           pos, R, size, rgb, style, small, 1.0)
-        if isinstance(batch, PointBatch):
-            batch.impostors.set_axes(self._view_rotation())
         culling.cull_back_faces(batch, style, self.view, pos, diam / 2)
 
     def _view_rotation(self) -> np.ndarray:
