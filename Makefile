@@ -108,6 +108,7 @@ bench: setup
 	$(BIN)/python benchmarks/bench_matter.py
 	$(BIN)/python benchmarks/bench_matter_render.py
 	$(BIN)/python benchmarks/bench_recording.py
+	$(BIN)/python benchmarks/bench_raycast.py
 
 baselines: setup
 	$(BIN)/python -m pytest tests/view tests/figures tests/vpython --regen-baselines

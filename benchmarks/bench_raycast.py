@@ -27,6 +27,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import resource
 import subprocess
 import sys
 import tempfile
@@ -35,6 +36,10 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
+
+from springscene.vpython.draw import renderer  # noqa: E402
+from springscene.vpython.run.options import RunOptions  # noqa: E402
+from springscene.vpython.run.runner import run_program  # noqa: E402
 
 # the renderer's switches for the ray-cast paths, all off for the meshes (those the
 # renderer has: a flag it lacks is left alone)
@@ -125,15 +130,20 @@ LATTICE_SIZE = (900, 600)
 
 def child(program: str, antialias: bool, ray_cast: bool, video: bool, out: str) -> dict:
     """In this process: run ``program`` to MP4 with the ray-cast paths on or off; its
-    steady frames/s, or with ``video`` the wall time of 3 s at 25 frames/s."""
-    from springscene.vpython.draw import renderer
-    from springscene.vpython.run.options import RunOptions
-    from springscene.vpython.run.runner import run_program
-
+    steady frames/s and processor seconds a frame (this process's, llvmpipe's threads
+    included: less moved by other programs' load), or with ``video`` the wall time of
+    3 s at 25 frames/s."""
     for flag in FLAGS:
         if hasattr(renderer, flag):
             setattr(renderer, flag, ray_cast)
     times: list[float] = []
+    cpu: list[float] = []
+
+    def tick(i, image) -> None:
+        times.append(time.perf_counter())
+        use = resource.getrusage(resource.RUSAGE_SELF)
+        cpu.append(use.ru_utime + use.ru_stime)
+
     if video:
         options = RunOptions(duration=VIDEO_SECONDS, fps=FPS, antialias=antialias,
                              page=False, canvas_only=True)
@@ -141,10 +151,11 @@ def child(program: str, antialias: bool, ray_cast: bool, video: bool, out: str) 
         options = RunOptions(frames=FRAMES, antialias=antialias, page=False, canvas_only=True)
     start = time.perf_counter()
     run_program(Path(program), Path(out), options,
-                on_frame=lambda i, image: times.append(time.perf_counter()))
+                on_frame=tick)
     wall = time.perf_counter() - start
     steady = times[3:]
-    return {"fps": (len(steady) - 1) / (steady[-1] - steady[0]), "wall": wall}
+    return {"fps": (len(steady) - 1) / (steady[-1] - steady[0]), "wall": wall,
+            "cpu": (cpu[-1] - cpu[3]) / (len(steady) - 1)}
 
 
 def measure(program: Path, antialias: bool, ray_cast: bool, video: bool, tmp: Path) -> dict:
@@ -176,7 +187,9 @@ def _line(name: str, aa: bool, best: dict) -> str:
     mode = "anti-aliased" if aa else "draft"
     ray, mesh = best[name, aa, True], best[name, aa, False]
     text = (f"  {name:<8} {mode:<13} ray-cast {ray['fps']:6.1f} frames/s, meshes "
-            f"{mesh['fps']:6.1f} ({ray['fps'] / mesh['fps']:.2f}x)")
+            f"{mesh['fps']:6.1f} ({ray['fps'] / mesh['fps']:.2f}x); processor "
+            f"{ray['cpu']:.3f} s/frame against {mesh['cpu']:.3f} "
+            f"({mesh['cpu'] / ray['cpu']:.2f}x less)")
     if name in VIDEO:
         video_ray, video_mesh = best[name, aa, True, "video"], best[name, aa, False, "video"]
         text += (f"; 3 s of video: {video_ray['wall']:5.1f} s against {video_mesh['wall']:5.1f} s "
