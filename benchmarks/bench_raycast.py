@@ -17,7 +17,10 @@ The first three are small stand-ins of our own with the shapes of VPython's demo
 the demos themselves), written into a temporary folder. For each: steady frames/s
 (frames 3 on; set-up not counted), and for ``curve`` and ``points`` the wall time of
 3 s of video at 25 frames/s (the programs' own set-up included), ray-cast against
-meshes. ``ROUNDS`` interleaved rounds, the best of each kept.
+meshes. ``--rounds`` rounds of each program (default 1), its runs interleaved, the best of
+each kept; each program's lines printed as it is done. Processor seconds a frame (the
+child's, llvmpipe's threads included) are quoted too: on a shared machine they move
+less with the others' load than frames/s.
 
 usage: .venv/bin/python benchmarks/bench_raycast.py [--rounds N] [--only NAME ...]
 """
@@ -197,36 +200,43 @@ def _line(name: str, aa: bool, best: dict) -> str:
     return text
 
 
+def _best_of(name: str, program: Path, rounds: int, tmp: Path) -> dict:
+    """``rounds`` rounds of ``program``, drafted and anti-aliased, ray-cast and meshed (and
+    timed for 3 s of video where :data:`VIDEO` says): the best of each."""
+    best: dict = {}
+    for _ in range(rounds):
+        for aa in (False, True):
+            for ray in (True, False):
+                runs = [(False, ())] + ([(True, ("video",))] if name in VIDEO else [])
+                for video, tag in runs:
+                    got = measure(program, aa, ray, video, tmp)
+                    key = (name, aa, ray, *tag)
+                    old = best.get(key)
+                    if old is None or (got["wall"] if video else -got["fps"]) < \
+                            (old["wall"] if video else -old["fps"]):
+                        best[key] = got
+    return best
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--rounds", type=int, default=ROUNDS)
     ap.add_argument("--only", action="append", help="only this program (repeatable)")
     a = ap.parse_args(argv)
-    best: dict = {}
-    with tempfile.TemporaryDirectory() as tmp:
-        tmp = Path(tmp)
-        found = programs(tmp, a.only)
-        for _ in range(a.rounds):
-            for name, program in found.items():
-                for aa in (False, True):
-                    for ray in (True, False):
-                        runs = [(False, ())] + ([(True, ("video",))] if name in VIDEO else [])
-                        for video, tag in runs:
-                            got = measure(program, aa, ray, video, tmp)
-                            key = (name, aa, ray, *tag)
-                            old = best.get(key)
-                            if old is None or (got["wall"] if video else -got["fps"]) < \
-                                    (old["wall"] if video else -old["fps"]):
-                                best[key] = got
     load = os.getloadavg()
     print("Ray-cast curves, helices and points against their meshes (renderer flags "
           f"{', '.join(FLAGS)} on / off), best of {a.rounds} round(s); 'atoms', 'curve' and "
           "'points' are stand-ins of our own with the shapes of VPython's demos AtomicSolid, "
-          "RotatingCurve and RotatingPoints; load average "
-          f"{load[0]:.1f} {load[1]:.1f} {load[2]:.1f}:")
-    for name in found:
-        for aa in (False, True):
-            print(_line(name, aa, best))
+          "RotatingCurve and RotatingPoints; load average at the start "
+          f"{load[0]:.1f} {load[1]:.1f} {load[2]:.1f}:", flush=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        tmp = Path(tmp)
+        for name, program in programs(tmp, a.only).items():
+            best = _best_of(name, program, a.rounds, tmp)
+            for aa in (False, True):
+                print(_line(name, aa, best), flush=True)
+    load = os.getloadavg()
+    print(f"load average at the end {load[0]:.1f} {load[1]:.1f} {load[2]:.1f}")
     return 0
 
 
