@@ -30,7 +30,8 @@ $(STAMP): pyproject.toml
 	touch $(STAMP)
 
 # OSMesa (Debian's libosmesa6) is the second off-screen backend; EGL is on the machine.
-# Installed when missing and apt-get can run (as root); otherwise its tests skip.
+# bubblewrap (bwrap) keeps a sandboxed run's program in its room (--sandbox, batch, grade).
+# Each installed when missing and apt-get can run (as root); otherwise its tests skip.
 system-deps:
 	@if ! ldconfig -p 2>/dev/null | grep -q 'libOSMesa.so'; then \
 	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
@@ -38,6 +39,13 @@ system-deps:
 	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq libosmesa6 >/dev/null) \
 	      || echo "could not install libosmesa6: OSMesa tests will skip"; \
 	  else echo "libosmesa6 not installed: OSMesa tests will skip"; fi; \
+	fi
+	@if ! command -v bwrap >/dev/null; then \
+	  if [ "$$(id -u)" = 0 ] && command -v apt-get >/dev/null; then \
+	    echo "installing bubblewrap"; \
+	    (apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq bubblewrap >/dev/null) \
+	      || echo "could not install bubblewrap: the sandbox tests will skip"; \
+	  else echo "bubblewrap not installed: the sandbox tests will skip"; fi; \
 	fi
 
 # Headless Chromium (Debian's chromium and chromium-driver) opens the interactive page in

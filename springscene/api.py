@@ -465,8 +465,8 @@ def run_vpython(program: str | Path, out: str | Path | None = None, *,
         ``.jsonl[.gz]`` file to keep the recording in (docs/recording.md; ``Video.run``).
     **options
         Any other field of :class:`springscene.vpython.run.options.RunOptions`
-        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout`` and
-        ``max_memory`` for the supervised run (a child process), or ``supervised=False``.
+        (``canvas_only``, ``page``, ``overlays``, ``quality``, ``lod``); ``timeout``,
+        ``max_memory``, ``sandbox`` (a ``Sandbox``) or ``supervised=False``.
 
     Returns
     -------

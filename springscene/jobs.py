@@ -122,20 +122,21 @@ def figures(cfg: Config, out: str | Path, *, backend: str = "auto",
 def vpython(program: str | Path, out: str | Path, *, supervised: bool = True,
             timeout: float | None = None, max_memory: int | str | None = None,
             on_frame: Callable | None = None, on_dialect: Callable | None = None,
-            **options) -> ProgramResult:
+            sandbox=None, **options) -> ProgramResult:
     """Run a VPython program headless to a video or still; ``options`` are the fields of
     :class:`springscene.vpython.run.options.RunOptions`. Supervised (the default), it runs
     in a child process that cannot leave anything behind, with ``timeout`` and
-    ``max_memory`` (:func:`springscene.vpython.run.supervise.run_supervised`); otherwise in
-    this process (``on_frame`` needs that)."""
+    ``max_memory`` (:func:`springscene.vpython.run.supervise.run_supervised`), in
+    ``sandbox`` (a :class:`springscene.vpython.run.sandbox.Sandbox`) if given; otherwise
+    in this process (``on_frame`` needs that)."""
     if "overlays" in options:
         options["overlays"] = tuple(options["overlays"])
     run_options = RunOptions(**options)
     if supervised and on_frame is None:
         return run_supervised(program, out, run_options, timeout=timeout,
-                              max_memory=max_memory, on_dialect=on_dialect)
-    unsupervised = [name for name, value in (("timeout", timeout), ("max_memory", max_memory))
-                    if value is not None]
+                              max_memory=max_memory, on_dialect=on_dialect, sandbox=sandbox)
+    unsupervised = [name for name, value in (("timeout", timeout), ("max_memory", max_memory),
+                                             ("sandbox", sandbox)) if value is not None]
     if unsupervised:
         raise UserError(f"{', '.join(unsupervised)}: only a supervised run has them "
                         "(not with on_frame or supervised=False)")

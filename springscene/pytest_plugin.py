@@ -41,6 +41,15 @@ its globals)::
 - ``pytest --springscene-program submission.py`` runs that program wherever a marker
   names one: an instructor's tests, written against their own program, check a
   student's.
+- ``pytest --springscene-run run.jsonl`` runs nothing: ``vpython_run()`` (naming no
+  program) is the run recorded in ``run.jsonl`` (``springscene vpython --out run.jsonl``;
+  docs/recording.md), as it was recorded, whatever options the marker or the call give.
+  A recording that ends at the program's error is the run up to it (``run.ended`` is
+  ``"error"``, ``run.error`` says what). ``--springscene-run-failed LINE`` stands for a
+  program that left no recording (it raised before its first frame, or was stopped):
+  ``vpython_run()`` fails the test with LINE. ``springscene grade`` grades this way.
+- ``@pytest.mark.weight(2)``: the points a test is worth in ``springscene grade``
+  (default 1).
 - A program is run once a session for the same options (and file contents); each test
   that asks again gets the same :class:`~springscene.Run`, or the same error (a program
   that raised fails each test with its traceback).
@@ -50,6 +59,7 @@ its globals)::
 
 from __future__ import annotations
 
+import importlib
 import re
 import warnings
 from pathlib import Path
@@ -65,6 +75,7 @@ from .view.compare import (MAX_MEAN_DIFF, PIXEL_TOLERANCE, TOLERANCE, compare, d
 
 DIFF_FOLDER = "springscene-diffs"
 PROGRAM_MARKER = "vpython_program"
+WEIGHT_MARKER = "weight"
 _RUNS = pytest.StashKey[dict]()    # a session's VPython runs: (file, options) -> (run, error)
 _configs: list = []      # the running sessions' configs, innermost last (verify() outside fixtures)
 
@@ -83,6 +94,13 @@ def pytest_addoption(parser) -> None:
     group.addoption("--springscene-program", dest="springscene_program", metavar="PROGRAM",
                     help="run this VPython program wherever a test's vpython_program "
                     "marker names one (an instructor's tests on a student's program)")
+    group.addoption("--springscene-run", dest="springscene_run", metavar="RECORDING",
+                    help="run nothing: vpython_run() naming no program gives the run "
+                    "recorded in RECORDING (.jsonl or .jsonl.gz, springscene vpython --out "
+                    "run.jsonl)")
+    group.addoption("--springscene-run-failed", dest="springscene_run_failed",
+                    metavar="LINE", help="the program left no recording: vpython_run() "
+                    "naming no program fails the test with LINE")
     parser.addini("springscene_baselines", "folder of the baseline pictures, relative to the "
                   "root folder (default: baselines/ beside each test file)", default="")
     parser.addini("springscene_missing_baseline", "store (default) or fail when a baseline "
@@ -95,6 +113,11 @@ def pytest_configure(config) -> None:
     config.addinivalue_line("markers", f"{PROGRAM_MARKER}(program, **options): the VPython "
                             "program (and springscene.run_vpython options) that vpython_run() "
                             "runs; a relative path is beside the test file")
+    config.addinivalue_line("markers", f"{WEIGHT_MARKER}(points): what the test is worth "
+                            "in springscene grade (default 1)")
+    recording = config.getoption("springscene_run", None)
+    if recording and not Path(config.invocation_params.dir, recording).is_file():
+        raise pytest.UsageError(f"--springscene-run {recording}: no such recording")
 
 
 def pytest_unconfigure(config) -> None:
@@ -231,6 +254,9 @@ class ProgramRuns:
             raise TypeError("vpython_run: no out (it gives the run as data; "
                             "springscene.run_vpython writes videos)")
         if program is None:
+            recorded = self._recorded()
+            if recorded is not None:
+                return recorded
             program, options = self._marked(options)
         path = self._locate(Path(program))
         key = (str(path.resolve()), *_stamp(path), repr(sorted(options.items())))
@@ -240,6 +266,22 @@ class ProgramRuns:
         if error is not None:
             raise error.with_traceback(None)
         return run
+
+    def _recorded(self):
+        """The run ``--springscene-run`` names (read once a session), or None without it;
+        ``--springscene-run-failed`` fails the test with its line."""
+        __tracebackhide__ = True
+        failed = self.config.getoption("springscene_run_failed", None)
+        if failed:
+            pytest.fail(failed, pytrace=False)
+        given = self.config.getoption("springscene_run", None)
+        if not given:
+            return None
+        path = Path(self.config.invocation_params.dir, given)
+        key = ("recording", str(path.resolve()))
+        if key not in self.runs:
+            self.runs[key] = (read_run(path), None)
+        return self.runs[key][0]
 
     def _marked(self, options: dict) -> tuple[str | Path, dict]:
         """The program the closest ``vpython_program`` marker names (``--springscene-program``
@@ -269,6 +311,13 @@ class ProgramRuns:
             return springscene.run_vpython(path, **options), None
         except Exception as exc:        # ProgramError (its traceback), UserError, RunEnded
             return None, exc
+
+
+def read_run(recording: Path):
+    """The :class:`springscene.Run` recorded in ``recording`` (springscene's API and the
+    recording's reader loaded on this first use, not with pytest)."""
+    reader = importlib.import_module("springscene.vpython.record.reader")
+    return springscene.Run(reader.read(recording), None, recording)
 
 
 def _stamp(path: Path) -> tuple:

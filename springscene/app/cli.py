@@ -24,6 +24,7 @@ from ..model.timeline import MAX_STEPS
 from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
 from .compare import add_compare_command, run_compare
+from .grade_cli import add_grade_command, run_grade
 from .starters import add_init_command, run_init, version
 from . import oserrors, signals
 from ..video import DEFAULT_QUALITY, QUALITIES
@@ -33,6 +34,7 @@ from ..outputs import check_output, hidden_name
 from ..vpython.record import trace
 from ..vpython.record.reader import read as read_recording
 from ..vpython.run.options import FORMATS, MAX_LOD_PX
+from ..vpython.run.sandbox import Sandbox, own_folder
 from ..vpython.run.supervise import RunEnded
 from ..vpython.run.report import size_text
 
@@ -60,6 +62,7 @@ def _build_parser() -> argparse.ArgumentParser:
     _add_vpython_command(sub)
     add_compare_command(sub)
     add_init_command(sub)
+    add_grade_command(sub)
     s = sub.add_parser("info", help="the off-screen backend, GL renderer and versions")
     s.add_argument("--backend", default="auto", choices=BACKENDS)
     return p
@@ -182,6 +185,9 @@ def _add_vpython_command(sub) -> None:
     s.add_argument("--max-memory", metavar="SIZE",
                    help="stop the program when it uses more memory, e.g. 500M or 2G "
                    "(exit 137; default: half the machine's)")
+    s.add_argument("--sandbox", action="store_true",
+                   help="run an untrusted program in a sandbox (bubblewrap): it reads only "
+                   "its own folder, writes only its outputs, has no network")
     s.add_argument("--lod", type=_lod_pixels, metavar="PX",
                    help="draw helices with polygons within PX pixels of the true curves, "
                    "anti-aliased too (default: 0.03 drafted and VPython's full 60 x 16 "
@@ -242,6 +248,8 @@ def _run(args: argparse.Namespace) -> int:
         return run_compare(args)
     if args.command == "init":
         return run_init(args)
+    if args.command == "grade":
+        return run_grade(args)
     _check_out_is_not_input(args)
     if args.command == "vpython":
         return _vpython(args)
@@ -325,6 +333,8 @@ def _vpython(args: argparse.Namespace) -> int:
                                   page=not args.no_page, canvas_only=args.canvas_only,
                                   quality=args.quality, lod=args.lod, record=record,
                                   timeout=args.timeout, max_memory=args.max_memory,
+                                  sandbox=Sandbox(own_folder(args.program))
+                                  if args.sandbox else None,
                                   on_dialect=lambda d: said.extend(_dialect_said(args, d)))
             traced = read_recording(record or args.out) if traces else None
     except RunEnded as exc:         # os._exit, a signal, --timeout, --max-memory, sys.exit(n)

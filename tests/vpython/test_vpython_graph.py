@@ -9,6 +9,7 @@ disabled controls, graph images; written atomically.
 
 from __future__ import annotations
 
+import math
 import os
 from html.parser import HTMLParser
 from pathlib import Path
@@ -19,6 +20,7 @@ import pytest
 from springscene.vpython.api import graphs as G
 from springscene.vpython.page import graph_images as GI   # graphs as pictures
 from springscene.vpython.core import widgets as W
+from springscene.vpython.core.vectors import set_lenient
 from springscene.vpython.page import html_page as P
 
 
@@ -449,7 +451,6 @@ def test_page_write_is_atomic(tmp_path, monkeypatch):
 
 
 def test_vpython6_dots_in_their_own_colours_are_hidden_and_cleared_with_their_series():
-    from springscene.vpython.core.vectors import set_lenient
     G.reset()
     set_lenient(True)
     try:
@@ -463,3 +464,21 @@ def test_vpython6_dots_in_their_own_colours_are_hidden_and_cleared_with_their_se
         assert blue.shown_count() == 0 == d.shown_count()
     finally:
         set_lenient(False)
+
+
+def test_vpython6_square_dots_are_drawn_square():
+    """gdots(shape="square") (VPython 6 only): a square of side 2 radius fills 4/pi of the
+    round dot's pixels, each dot alone on the axes."""
+    def blue(shape: str) -> int:
+        G.reset()
+        g = G.graph(xmin=0, xmax=10, ymin=0, ymax=10)
+        set_lenient(True)
+        try:
+            G.gdots(color=BLUE, radius=10, shape=shape, data=[[2, 2], [5, 5], [8, 8]])
+        finally:
+            set_lenient(False)
+        return count_color(GI.draw(g, 400, 300), (0, 0, 255))
+
+    round_, square = blue("round"), blue("square")
+    assert round_ > 3 * 250                        # three dots 20 px across
+    assert square / round_ == pytest.approx(4 / math.pi, rel=0.08)

@@ -257,7 +257,7 @@ def test_in_place_changes_mark_the_object(vp):
 
 
 def test_trails_and_curves(vp):
-    ball = vp.sphere(make_trail=True, retain=3)
+    ball = vp.sphere(make_trail=True, retain=3, interval=1)   # a point at each pos change
     for x in range(5):
         ball.pos = vp.vector(x, 0, 0)
     assert [p["pos"].x for p in ball._trail._pts] == [2, 3, 4]
@@ -457,13 +457,18 @@ def test_up_and_rotate_move_axis_and_up_together(vp):
 
 
 def test_trail_off_and_on_starts_a_new_trail(vp):
-    ball = vp.sphere(make_trail=True)
+    from springscene.vpython.api import attachments
+
+    ball = vp.sphere(pos=vp.vector(0, 0, 0), make_trail=True)
     ball.pos = vp.vector(1, 0, 0)
+    attachments.update()                      # a render: the trail takes the position
     first = ball._trail
     ball.make_trail = False
     ball.pos = vp.vector(0, 5, 0)
+    attachments.update()
     ball.make_trail = True
     ball.pos = vp.vector(1, 5, 0)
+    attachments.update()
     assert [p["pos"].value for p in first._pts] == [[0, 0, 0], [1, 0, 0]]
     assert [p["pos"].value for p in ball._trail._pts] == [[0, 5, 0], [1, 5, 0]]
 

@@ -13,6 +13,10 @@ the points of its graphs. The checks are the lab sheet's:
 - K + Us, computed from the motion, stays within 1 % of its mean;
 - the program prints its period, within 2 % of the motion's;
 - it plots K, Us and K + Us, and its own K + Us curve is flat within 1 %.
+
+``springscene grade submission.py --tests test_spring_lab.py --results results.json``
+grades a submission with these tests (the period worth 2 points, ``pytest.mark.weight``)
+and writes Gradescope's results.json; README.md says how.
 """
 
 import math
@@ -49,6 +53,7 @@ def measured_period(run) -> float:
     return float(np.diff(passes).mean())
 
 
+@pytest.mark.weight(2)                # the lab's main result: 2 points, the others 1
 def test_period_is_two_pi_root_m_over_k(run):
     m, k = run.globals["m"], run.globals["k"]
     expected = 2 * math.pi * math.sqrt(m / k)

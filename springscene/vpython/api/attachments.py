@@ -25,6 +25,7 @@ from typing import Any
 
 from ..core import runtime
 from ..objects.base import _current_canvas
+from ..objects import trails as make_trails
 from ..objects.curves import curve, points
 from ..objects.solids import arrow
 from ..core.vectors import vector
@@ -160,12 +161,14 @@ def attach_light(obj, make_light, offset=None, color=None, **options: Any):
 
 
 def update() -> None:
-    """Bring every attached arrow, trail and light up to date (called at each render)."""
+    """Bring every attached arrow, trail and light up to date (called at each render),
+    and the trails of ``make_trail`` (:mod:`..objects.trails`)."""
     for a in _arrows:
         if a._run:
             _follow(a)
     for t in _trails:
         t.update()
+    make_trails.at_render()
     for light in _lights:
         obj, offset = light._attached
         light.pos = obj.pos + offset
@@ -173,5 +176,6 @@ def update() -> None:
 
 def reset() -> None:
     _trails.clear()
+    make_trails.reset()
     _arrows.clear()
     _lights.clear()

@@ -393,7 +393,7 @@ class gdots(GraphSeries):
     """Points as dots (VPython's ``gdots``): ``radius`` (3 px) or ``size``, ``color``, ...
 
     A VPython 6 program may also give ``shape`` ('round' or 'square', VPython 6's
-    ``gdots(shape=)``); it is kept, and the dots are drawn round.
+    ``gdots(shape=)``); square dots are drawn square.
     """
 
     _kind = "points"

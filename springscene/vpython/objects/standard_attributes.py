@@ -23,6 +23,7 @@ from ..core import runtime
 from ..core.attributes import Linked
 from .base import _Base, component
 from ..core.checks import _vec, one_of
+from . import trails
 from .curves import curve, points
 from .shared_defaults import Default, compact, default, seed_keys, stored
 from ..core.vectors import is_lenient, vector
@@ -108,6 +109,9 @@ class standard(_Base):
     _pps = 0
     _trail = None
     _pos_sets = 0
+    _pos_set = True          # pos given or set: a render may add it to the trail
+    _trail_last = None       # the last point a render added to the trail
+    _ninterval = 0           # changes of pos counted towards the next interval point
     _oldaxis = None
     _adjustupaxis = True
     _pickable = True
@@ -127,6 +131,7 @@ class standard(_Base):
         return id(self) in _BUILDING
 
     def __init__(self, **args) -> None:
+        pos_given = "pos" in args
         _BUILDING.add(id(self))
         try:
             self._setup(args)
@@ -135,7 +140,11 @@ class standard(_Base):
         if self._compact:
             compact(self)
         if self._make_trail:
-            self._add_trail_point()
+            if is_lenient():        # VPython 6: the trail starts at the pos given
+                if pos_given:
+                    self._add_trail_point()
+            else:
+                trails.begin(self, pos_given)
 
     def _setup(self, args: dict) -> None:
         for name, v in self._defaults:
@@ -187,9 +196,13 @@ class standard(_Base):
 
     def _on_pos_change(self) -> None:
         self._dirty = True
-        if self._make_trail and not self._constructing:
+        if not self._make_trail or self._constructing:
+            return
+        if not is_lenient():          # Web VPython, VPython 7: :mod:`.trails`
+            trails.pos_changed(self)
+        else:                         # VPython 6 (trail_update): changes 1, 1 + n, 1 + 2n...
             self._pos_sets += 1
-            if (self._interval <= 0 or self._pos_sets % self._interval == 0) \
+            if (self._interval <= 0 or (self._pos_sets - 1) % self._interval == 0) \
                     and self._pps_allows():
                 self._add_trail_point()
 
@@ -209,19 +222,22 @@ class standard(_Base):
 
     def _add_trail_point(self) -> None:
         if self._trail is None:
-            colour = self._trail_color if self._trail_color is not None else self._color
-            if self._trail_type == "points":
-                radius = self._trail_radius if self._trail_radius is not None \
-                    else 0.1 * self._size.y
-                self._trail = points(canvas=self._canvas, color=vector(colour), radius=radius,
-                                     size_units="world", retain=self._retain,
-                                     frame=self._frame)
-            else:
-                radius = 0 if is_lenient() else self._trail_radius or 0   # VPython 6: thin
-                self._trail = curve(canvas=self._canvas, color=vector(colour), radius=radius,
-                                    retain=self._retain, frame=self._frame)
-            self._trail._unlisted = not is_lenient()   # VPython 7 lists no make_trail curve
+            self._new_trail_piece()
         self._trail.append(vector(self._pos))
+
+    def _new_trail_piece(self) -> None:
+        """A new, empty piece of trail in the trail's colour as it is now."""
+        colour = self._trail_color if self._trail_color is not None else self._color
+        if self._trail_type == "points":
+            radius = self._trail_radius if self._trail_radius is not None \
+                else 0.1 * self._size.y
+            self._trail = points(canvas=self._canvas, color=vector(colour), radius=radius,
+                                 size_units="world", retain=self._retain, frame=self._frame)
+        else:
+            radius = 0 if is_lenient() else self._trail_radius or 0   # VPython 6: thin
+            self._trail = curve(canvas=self._canvas, color=vector(colour), radius=radius,
+                                retain=self._retain, frame=self._frame)
+        self._trail._unlisted = not is_lenient()   # VPython 7 lists no make_trail curve
 
     def clear_trail(self) -> None:
         """Clear the trail, with its pieces from before a ``make_trail = False``: GlowScript
@@ -229,6 +245,7 @@ class standard(_Base):
         for piece in [*self.__dict__.get("_stopped_trails", ()), self._trail]:
             if piece is not None:
                 piece.clear()
+        trails.restarted(self)
 
     @property
     def make_trail(self) -> bool:
@@ -243,11 +260,21 @@ class standard(_Base):
             self._trail = None
         elif not self._make_trail and not self._constructing:
             self._make_trail = True
-            self._add_trail_point()
+            self._add_trail_point()      # a new piece, starting at the object
+            if not is_lenient():
+                self._pos_set = True
+                trails.follow(self)
         self._make_trail = value
+
+    def _retain_trail(self) -> None:
+        """GlowScript's ``retain`` setter: the running trail keeps that many from its next point."""
+        if self._trail is not None:
+            self._trail.retain = self._retain
 
     def _recolour_trail(self) -> None:
         if self._trail is not None:
+            if not is_lenient():        # GlowScript: the points made so far keep their colour
+                trails.keep_colours(self._trail)
             self._trail.color = self._trail_color
 
     trail_type = Linked(one_of("curve", "points"))
@@ -256,7 +283,7 @@ class standard(_Base):
     trail_radius = Linked(float, get=lambda self: (
         self._trail_radius if self._trail_radius is not None else 0.1 * self._size.y))
     interval = Linked(int)
-    retain = Linked(int)
+    retain = Linked(int, then="_retain_trail")
     pps = Linked()
     pickable = Linked(bool)
 

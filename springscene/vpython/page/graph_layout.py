@@ -45,6 +45,12 @@ def plain_text(markup: Any) -> str:
 
 
 
+def _dot_marker(series) -> str:
+    """matplotlib's marker for a series' dots: VPython 6's ``gdots(shape="square")`` squares
+    (a side of twice the radius, as its dots are a diameter across), else round."""
+    return "s" if getattr(series, "shape", "round") == "square" else "o"
+
+
 def _px_to_pt(px: float) -> float:
     return px * 72.0 / DPI
 
@@ -183,7 +189,7 @@ class _Panel:
             a["bars"] = PolyCollection(np.zeros((0, 4, 2)), animated=True)
             self.ax.add_collection(a["bars"], autolim=False)
         elif s._kind == "points":
-            (a["points"],) = self.ax.plot([], [], linestyle="none", marker="o",
+            (a["points"],) = self.ax.plot([], [], linestyle="none", marker=_dot_marker(s),
                                           markeredgewidth=0, animated=True)
         else:
             (a["line"],) = self.ax.plot([], [], animated=True, solid_joinstyle="round")
@@ -269,7 +275,7 @@ class _Panel:
             colors = [rgb_of(s.color, "color") for s in entries]
             handles = [Patch(facecolor=(*c, 0.5), edgecolor=c) if s._kind == "bars"
                        else Line2D([], [], color=c, linewidth=2,
-                                   marker="o" if s._kind == "points" else None,
+                                   marker=_dot_marker(s) if s._kind == "points" else None,
                                    linestyle="none" if s._kind == "points" else "-")
                        for s, c in zip(entries, colors)]
             labels = [plain_text(s.label) for s in entries]

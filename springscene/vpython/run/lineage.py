@@ -14,6 +14,10 @@
   SIGTERM (``PR_SET_PDEATHSIG``); seeing its parent gone, it removes the private run
   folder, kills what it started and itself (:func:`die_with_parent`). The same happens
   when a report finds the pipe to the parent closed.
+- **In a sandbox** (:mod:`.sandbox`) springscene is outside the child's PID namespace and
+  cannot be watched from inside (parent ``0``): bubblewrap kills the sandbox with
+  springscene (``--die-with-parent``), and a janitor outside removes the run's folder
+  (:mod:`.supervise`). A report that finds the pipe closed ends the run here.
 """
 
 from __future__ import annotations
@@ -50,9 +54,12 @@ def die_with_parent(parent: int, folder: Path, thread: int | None = None) -> Non
     """SIGTERM when ``parent`` (its thread ``thread``, which started this process) dies,
     even by SIGKILL; then :func:`orphaned`. A parent that died before this call is caught
     by comparing ``os.getppid()``. The child is also made a subreaper of what the program
-    leaves."""
+    leaves. ``parent`` 0: the child runs in a sandbox (above), which ends it with
+    springscene."""
     _state.update(parent=parent, thread=thread, folder=Path(folder), pid=os.getpid())
     _prctl(PR_SET_CHILD_SUBREAPER, 1)
+    if not parent:
+        return
 
     def on_term(signum, frame) -> None:
         if os.getpid() == _state["pid"] and parent_dead():
@@ -112,8 +119,11 @@ def parent_dead() -> bool:
     """Whether the parent is dead or dying. The kernel's signal comes as the parent's thread
     that started this process exits, and the pipe closes as its last thread does: the
     parent's other threads may still be exiting, so ``os.getppid()`` may not have changed
-    yet. That thread's own state tells (``/proc``: exiting, a zombie, or gone)."""
+    yet. That thread's own state tells (``/proc``: exiting, a zombie, or gone). In a
+    sandbox the closed pipe is the only sign: springscene is gone or has done with it."""
     parent, thread = _state["parent"], _state["thread"] or _state["parent"]
+    if not parent:
+        return True
     if os.getppid() != parent:
         return True
     return _gone(parent, thread)
@@ -158,7 +168,7 @@ def _remove_run_folder() -> None:
         shutil.rmtree(folder, ignore_errors=True)
 
 
-def _processes() -> dict[int, list[int]]:
+def processes() -> dict[int, list[int]]:
     """Each live process's children (zombies left out), from ``/proc``."""
     children: dict[int, list[int]] = {}
     try:
@@ -178,7 +188,7 @@ def _processes() -> dict[int, list[int]]:
 
 def descendants(pid: int | None = None) -> list[int]:
     """The live descendants of ``pid`` (this process)."""
-    children, found = _processes(), []
+    children, found = processes(), []
     todo = list(children.get(pid or os.getpid(), ()))
     while todo:
         p = todo.pop()

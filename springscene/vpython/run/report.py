@@ -1,5 +1,6 @@
 """What the supervisor of a run (:mod:`.supervise`) measures and says: the child's memory
-(``/proc/PID/status``), ``--max-memory`` sizes, why no frame comes, and how a run ended.
+(``/proc/PID/status``; in a sandbox, the sandboxed interpreter's and its children's),
+``--max-memory`` sizes, why no frame comes, and how a run ended.
 
 Sizes are binary, written as the flag takes them: ``500M`` is 500 × 2^20 bytes.
 """
@@ -13,6 +14,7 @@ import time
 from pathlib import Path
 
 from ...errors import UserError
+from . import lineage
 
 DEFAULT_SHARE = 0.5          # of the machine's (or the container's) memory, by default
 MIN_MEMORY = 100 << 20       # a run needs about 200M for Python, numpy and VTK anyway
@@ -56,6 +58,63 @@ def rss_of(pid: int) -> int:
 
 def peak_of(pid: int) -> int:
     return _status_field(pid, "VmHWM")
+
+
+def pss_of(pid: int) -> int:
+    """A process's proportional set size (pages it shares counted as its share), in bytes;
+    its resident size where the kernel has no ``smaps_rollup``."""
+    try:
+        with open(f"/proc/{pid}/smaps_rollup", encoding="ascii") as f:
+            for line in f:
+                if line.startswith("Pss:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return rss_of(pid)
+
+
+RESCAN = 0.25               # s between looks for the processes a sandboxed program started
+
+
+class SandboxMemory:
+    """The memory of a sandboxed run, whose child here is bubblewrap's: the interpreter is
+    its grandchild (under the sandbox's first process). ``()`` gives ``(now, peak)``: the
+    interpreter's resident size, plus the proportional sizes of the processes it started
+    (forks share its pages: counted once), looked for every :data:`RESCAN` s."""
+
+    def __init__(self, root: int) -> None:
+        self.root, self.interpreter = root, None
+        self.started: int = 0           # the started processes' memory at the last look
+        self.next_look = 0.0
+
+    def __call__(self) -> tuple[int, int]:
+        now = time.monotonic()
+        if now >= self.next_look or self.interpreter is None:
+            self.next_look = now + RESCAN
+            self._look()
+        if self.interpreter is None:
+            return 0, 0
+        current = rss_of(self.interpreter) + self.started
+        return current, max(current, peak_of(self.interpreter))
+
+    def _look(self) -> None:
+        children = lineage.processes()
+        first = children.get(self.root, [])
+        inside = children.get(first[0], []) if first else []
+        self.interpreter = inside[0] if inside else None
+        if self.interpreter is None:
+            return
+        todo, started = list(children.get(self.interpreter, ())), []
+        while todo:
+            pid = todo.pop()
+            started.append(pid)
+            todo.extend(children.get(pid, ()))
+        self.started = sum(pss_of(pid) for pid in started)
+
+    def first(self) -> int | None:
+        """The sandbox's first process (its init: killing it ends all inside), if any."""
+        first = lineage.processes().get(self.root, [])
+        return first[0] if first else None
 
 
 def machine_memory() -> int:

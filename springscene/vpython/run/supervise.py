@@ -22,6 +22,13 @@ a thread left running after the program ends   the files, the child killed, exit
 processes it started (forks, daemons)          the files, those killed (:mod:`.lineage`)
 ============================================  ====================================
 
+With a :class:`.sandbox.Sandbox`, the child interpreter starts inside bubblewrap (its
+command line from :mod:`.sandbox`): the process watched here is bwrap's, the memory is the
+sandboxed interpreter's and its children's (:class:`.report.SandboxMemory`), a kill ends
+the sandbox's first process and so everything inside, and bwrap's ``128 + signal`` of a
+killed interpreter is read as that signal. A read or write outside the sandbox is the
+program's own error (exit 1). Where no sandbox can be made, :class:`UserError` says why.
+
 Each abnormal ending is one line with the peak memory and the program time reached.
 While no frame comes for :data:`STALL_AFTER` s of wall clock, the reason is said (what
 ``rate``/``sleep`` do to the program clock, or the program's line when it calls neither).
@@ -51,7 +58,9 @@ from ...errors import OutputError, ProgramError, UserError
 from ...outputs import hidden_name
 from .options import RunOptions, check_request
 from .runner import ProgramRaised, ProgramResult
-from .report import Watch, ended_line, memory_limit, parse_size, peak_of, rss_of
+from .report import (SandboxMemory, Watch, ended_line, memory_limit, parse_size, peak_of,
+                     rss_of)
+from .sandbox import Sandbox, command as sandbox_command, unavailable as no_sandbox
 
 POLL = 0.02                 # s: how often the child's memory and the clock are checked
 # the child in a process group of its own (Popen's process_group is Python 3.11's)
@@ -75,11 +84,15 @@ class RunEnded(Exception):
 def run_supervised(program, out, options: RunOptions = RunOptions(), *,
                    timeout: float | None = None, max_memory: int | str | None = None,
                    on_dialect: Callable | None = None, say: Callable | None = None,
-                   stall_after: float = STALL_AFTER) -> ProgramResult:
+                   stall_after: float = STALL_AFTER,
+                   sandbox: Sandbox | None = None) -> ProgramResult:
     """:func:`.runner.run_program`'s run in a child process, with ``timeout`` (seconds of
-    wall clock) and ``max_memory`` (bytes, or a size such as ``"2G"``). ``say(line)`` gets
-    the diagnoses while no frame comes (default: stderr). Raises :class:`RunEnded`,
-    :class:`ProgramError` or :class:`UserError`."""
+    wall clock) and ``max_memory`` (bytes, or a size such as ``"2G"``), inside ``sandbox``
+    if one is given. ``say(line)`` gets the diagnoses while no frame comes (default:
+    stderr). Raises :class:`RunEnded`, :class:`ProgramError` or :class:`UserError`."""
+    why = no_sandbox() if sandbox is not None else None
+    if why is not None:
+        raise UserError(f"--sandbox: no sandbox here: {why}")
     checked = check_request(program, out, options)
     path, out = checked.program, checked.out
     limit = memory_limit(max_memory)
@@ -95,14 +108,17 @@ def run_supervised(program, out, options: RunOptions = RunOptions(), *,
     except OSError as exc:
         raise UserError(f"--out {out}: cannot write there ({exc.strerror})") from None
     try:
-        with _stop_signals():
+        with _stop_signals(), _janitor(folder, sandbox is not None):
             # the child writes every file in the private folder; they move out when whole
             child_options = options if options.record is None else dataclasses.replace(
                 options, record=str(folder / Path(options.record).name))
-            request = {"program": str(path), "out": str(folder / out.name),
+            # (absolute in a sandbox: the child starts in another working folder there)
+            shown = str(path) if sandbox is None else os.path.abspath(path)
+            request = {"program": shown, "out": str(folder / out.name),
                        "options": child_options.to_request(),
                        "parent_thread": threading.get_native_id()}   # (see .lineage)
-            report = _supervise(_start(request), watch, on_dialect)
+            jail = None if sandbox is None else sandbox_command(sandbox, path, folder)
+            report = _supervise(_start(request, jail), watch, on_dialect)
             return _finish(report, watch, folder, out,
                            Path(options.record) if options.record is not None else None)
     finally:
@@ -144,23 +160,53 @@ def _stop_signals():
             signal.signal(signum, handler)
 
 
-def _start(request: dict) -> subprocess.Popen:
+# removes the folder named by $0 once its stdin ends (a second try if a dying process
+# inside was still writing there)
+_SWEEP = 'read _; rm -rf -- "$0" 2>/dev/null || { sleep 1; rm -rf -- "$0"; }'
+
+
+@contextlib.contextmanager
+def _janitor(folder: Path, needed: bool):
+    """For a sandboxed run: a shell outside the sandbox that removes the run's folder if
+    springscene is killed outright (SIGKILL: bwrap then kills everything inside, and
+    nobody there could remove it). It waits for the end of a pipe only this process
+    holds; the run's end here ends it."""
+    if not needed:
+        yield
+        return
+    janitor = subprocess.Popen(["/bin/sh", "-c", _SWEEP, str(folder)], stdin=subprocess.PIPE,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                               **_OWN_GROUP)
+    try:
+        yield
+    finally:
+        janitor.kill()
+        janitor.wait()
+        janitor.stdin.close()
+
+
+def _start(request: dict, jail: list[str] | None = None) -> subprocess.Popen:
     """The child: a fresh interpreter in its own process group (a terminal's Ctrl-C reaches
-    this process, which ends the child), reporting on a pipe."""
+    this process, which ends the child), reporting on a pipe; started by ``jail`` (a
+    sandbox's command line), if given, which knows no parent (``0``: see :mod:`.lineage`)
+    and reads nothing from this process's terminal."""
     read, write = os.pipe()
     # not the working folder on the path (the program's own folder goes there), and this
     # springscene found last where no installation provides it
     code = (f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r}); "
             "from springscene.vpython.run.child import main; sys.exit(main())")
     try:
-        child = subprocess.Popen([sys.executable, "-c", code, str(write), str(os.getpid()),
-                                  json.dumps(request)], pass_fds=(write,), **_OWN_GROUP)
+        child = subprocess.Popen([*(jail or []), sys.executable, "-c", code, str(write),
+                                  str(0 if jail else os.getpid()), json.dumps(request)],
+                                 pass_fds=(write,), **_OWN_GROUP,
+                                 stdin=subprocess.DEVNULL if jail else None)
     except BaseException:
         os.close(read)
         raise
     finally:
         os.close(write)
     child.report_fd = read
+    child.sandbox = SandboxMemory(child.pid) if jail else None
     return child
 
 
@@ -227,16 +273,16 @@ def _check(child: subprocess.Popen, watch: Watch, report: dict | None) -> int | 
     """The child's exit status once it has ended (or been ended here), else None."""
     pid, wait, usage = os.wait4(child.pid, os.WNOHANG)
     if pid:
-        child.returncode = os.waitstatus_to_exitcode(wait)
+        child.returncode = _status(child, wait)
         watch.peak = max(watch.peak, usage.ru_maxrss * 1024)
         return child.returncode
-    watch.peak = max(watch.peak, peak_of(child.pid))
+    rss, peak = child.sandbox() if child.sandbox else (rss_of(child.pid), peak_of(child.pid))
+    watch.peak = max(watch.peak, peak)
     if report is not None:
         if report.get("threads") or time.monotonic() - watch.reported > GRACE:
             _kill(child)        # its work is done; a thread it left would keep it forever
             return 0
         return None
-    rss = rss_of(child.pid)
     if rss > watch.limit:
         _kill(child)
         watch.killed = ("memory", rss)
@@ -249,9 +295,23 @@ def _check(child: subprocess.Popen, watch: Watch, report: dict | None) -> int | 
     return -signal.SIGKILL
 
 
+def _status(child: subprocess.Popen, wait: int) -> int:
+    """The child's exit status: bwrap's ``128 + n`` for an interpreter killed by signal
+    ``n`` is that signal's ``-n`` (as a child killed outside a sandbox)."""
+    status = os.waitstatus_to_exitcode(wait)
+    if child.sandbox and 128 < status <= 128 + signal.SIGRTMAX:
+        return 128 - status
+    return status
+
+
 def _kill(child: subprocess.Popen) -> None:
     """End the child and its process group at once (what the program started in it too,
-    even when the child itself has already ended), and reap the child."""
+    even when the child itself has already ended; in a sandbox its first process, whose
+    death ends everything inside), and reap the child."""
+    first = child.sandbox.first() if child.sandbox and child.returncode is None else None
+    if first is not None:
+        with contextlib.suppress(ProcessLookupError, PermissionError):
+            os.kill(first, signal.SIGKILL)
     try:
         os.killpg(child.pid, signal.SIGKILL)
     except (ProcessLookupError, PermissionError):
@@ -260,7 +320,7 @@ def _kill(child: subprocess.Popen) -> None:
         return
     try:
         _, wait, _ = os.wait4(child.pid, 0)
-        child.returncode = os.waitstatus_to_exitcode(wait)
+        child.returncode = _status(child, wait)
     except ChildProcessError:
         child.returncode = -signal.SIGKILL
 
@@ -389,4 +449,5 @@ def _threads(names: list[str]) -> str:
     return f"thread{'s' * (len(names) > 1)} {shown}"
 
 
-__all__ = ["run_supervised", "RunEnded", "parse_size", "EXIT_TIMEOUT", "EXIT_MEMORY"]
+__all__ = ["run_supervised", "RunEnded", "Sandbox", "parse_size", "EXIT_TIMEOUT",
+           "EXIT_MEMORY"]

@@ -1,0 +1,1 @@
+"""Many VPython programs at once: videos, pages, grades and an index (springscene batch, springscene grade)."""
