@@ -46,8 +46,13 @@ def _cloud(turn: float) -> None:
 
 
 def _picture(antialias: bool, ray_cast: bool, monkeypatch):
+    """Two frames of the scene (the second as a run's); the impostors drafted too."""
     monkeypatch.setattr(renderer, "POINT_IMPOSTORS", ray_cast)
     r = Renderer(vp.scene, antialias=antialias)
+    if ray_cast and not antialias:       # the impostors drafted: chosen as if anti-aliased
+        r.antialias = True
+        r.frame()
+        r.antialias = False
     r.frame()
     image = r.frame()
     kinds = {k[0]: type(b) for k, b in r._batches.items()}
@@ -58,7 +63,8 @@ def _picture(antialias: bool, ray_cast: bool, monkeypatch):
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 @pytest.mark.parametrize("turn", [0.0, 0.39], ids=["along-z", "turned"])
 def test_point_impostors_draw_the_point_meshes(turn, antialias, monkeypatch):
-    """The cloud as impostors and as VPython's 8 x 8 point meshes: within the bounds."""
+    """The cloud as impostors and as VPython's 8 x 8 point meshes: within the bounds
+    (drafted, the impostors forced: by default drafted points are meshes)."""
     _cloud(turn)
     image, kinds = _picture(antialias, True, monkeypatch)
     vp.reset()
@@ -95,7 +101,7 @@ def test_points_are_ray_cast_and_sized_by_the_range():
     vp.scene.range = 10
     vp.points(pos=[vp.vector(-3, 0, 0), vp.vector(0, 0, 0)], radius=3)
     vp.points(pos=[vp.vector(3, 0, 0)], radius=30)
-    r = Renderer(vp.scene, antialias=False)
+    r = Renderer(vp.scene, antialias=True)
     image, view = r.frame(), r.view
     (batch,) = r._batches.values()
     assert isinstance(batch, PointBatch) and batch.no_meshes
@@ -109,4 +115,14 @@ def test_points_are_ray_cast_and_sized_by_the_range():
     grey = image.max(axis=2)
     for col, row in view.project(np.array([[-3.0, 0, 0], [0, 0, 0], [3, 0, 0]])):
         assert grey[int(round(row)), int(round(col))] > 24
+    r.close()
+
+
+def test_drafted_points_are_meshes():
+    """Drafted, llvmpipe draws the 8 x 8 meshes for less than the impostors: they stay."""
+    vp.points(pos=[vp.vector(0, 0, 0)], radius=5)
+    r = Renderer(vp.scene, antialias=False)
+    r.frame()
+    (batch,) = r._batches.values()
+    assert type(batch) is SphereBatch and batch.instances == 1
     r.close()
