@@ -10,7 +10,8 @@ run in a child process of its own so that nothing drawn in one run is kept for t
 - ``curve``: one curve of 15,000 random segments of random radius and colour, turning,
   at 600 x 600: the shape of VPython's demo RotatingCurve;
 - ``points``: 15,000 points of random size (3-13) and colour, the camera turning, at
-  600 x 600: the shape of VPython's demo RotatingPoints;
+  600 x 600: the shape of VPython's demo RotatingPoints (drafted, the renderer keeps
+  the points' meshes either way);
 - ``lattice``: springscene/examples/lattice.py at 900 x 600.
 
 The first three are small stand-ins of our own with the shapes of VPython's demos (not

@@ -47,7 +47,8 @@ they draw the meshes' pictures (0.007-0.009 % of pixels off by more than 24/255)
 anti-aliased, a pixel's samples are tested against the outline's reach along the
 pixel's ray (0.11-0.13 %). Against real VPython (the fidelity scene ``points``)
 silhouette IoU 0.991-0.996. They need ARB_conservative_depth besides
-(:func:`.capsules.available`, asked by the renderer).
+(:func:`.capsules.available`, asked by the renderer), which uses them anti-aliased only:
+drafted, llvmpipe draws the meshes for less (0.89x the processor time).
 """
 
 from __future__ import annotations
