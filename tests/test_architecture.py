@@ -25,6 +25,7 @@ MAX_MODULE_LINES = 600
 MAX_FUNCTION_LINES = 60
 HEAVY = ("vtkmodules", "pyvista", "matplotlib", "cycler", "imageio", "imageio_ffmpeg", "PIL", "tqdm",
          "skimage",
+         "distributed",   # Dask's (springscene[dask]): only for batch --scheduler
          "IPython")     # the notebook's: not a dependency, there only inside a notebook
 # standard modules slow enough to matter at start-up: importlib.metadata took 50 ms of the
 # window before springscene's signal handlers are in place (springscene.app.signals)

@@ -23,6 +23,7 @@ from ..model.integrators import NAMES
 from ..model.timeline import MAX_STEPS
 from ..science.sweep import parse_omega, summary
 from ..view.backend import BACKENDS
+from .batch_cli import add_batch_command, run_batch_command
 from .compare import add_compare_command, run_compare
 from .grade_cli import add_grade_command, run_grade
 from .starters import add_init_command, run_init, version
@@ -60,6 +61,7 @@ def _build_parser() -> argparse.ArgumentParser:
     _add_numbers_commands(sub)
     _add_picture_commands(sub)
     _add_vpython_command(sub)
+    add_batch_command(sub)
     add_compare_command(sub)
     add_init_command(sub)
     add_grade_command(sub)
@@ -248,6 +250,8 @@ def _run(args: argparse.Namespace) -> int:
         return run_compare(args)
     if args.command == "init":
         return run_init(args)
+    if args.command == "batch":
+        return run_batch_command(args)
     if args.command == "grade":
         return run_grade(args)
     _check_out_is_not_input(args)

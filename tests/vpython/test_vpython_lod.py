@@ -23,7 +23,7 @@ from springscene.errors import UserError
 from springscene.view import camera
 from springscene.view.geometry import HelixTube
 from springscene.vpython.geometry import helices, lod, object_meshes, placement
-from springscene.vpython.draw import culling
+from springscene.vpython.draw import culling, renderer
 from springscene.vpython.draw.renderer import Renderer
 from springscene.vpython.run.options import RunOptions
 from springscene.vpython.run.supervise import run_supervised
@@ -36,6 +36,13 @@ def fresh():
     vp.reset()
     yield
     vp.reset()
+
+
+@pytest.fixture
+def helix_meshes(monkeypatch):
+    """Helices drawn as meshes (as where the GL lacks the capsules' extensions): the tests
+    of the meshes' level of detail and culling."""
+    monkeypatch.setattr(renderer, "HELIX_CAPSULES", False)
 
 
 def _helices():
@@ -131,6 +138,7 @@ def test_lod_mesh_stays_near_the_full_one():
     assert np.all(full[0].min(0) >= lo - 1e-9) and np.all(full[0].max(0) <= hi + 1e-9)
 
 
+@pytest.mark.usefixtures("helix_meshes")
 def test_renderer_draws_a_lattice_of_helices_in_one_batch():
     """144 helices, one actor, drawn (draft) from the first frame at the detail for their
     size: the camera is placed before anything is drawn. Close to VPython's full detail:
@@ -159,6 +167,7 @@ def test_renderer_draws_a_lattice_of_helices_in_one_batch():
     assert full.any() and bad <= 0.002 and mean <= MAX_MEAN_DIFF, (bad, mean)
 
 
+@pytest.mark.usefixtures("helix_meshes")
 def test_zooming_in_redraws_unchanged_objects_in_more_detail():
     """Objects that do not move keep their level of detail only while the camera does:
     the range shrinking (autoscale zooming in as a program runs, or the program setting
@@ -200,6 +209,7 @@ def test_helix_and_sphere_triangles_face_out():
         assert np.all((ok > 0) | (area < 1e-12))          # degenerate pole triangles aside
 
 
+@pytest.mark.usefixtures("helix_meshes")
 def test_back_faces_culled_only_when_hidden():
     """Opaque spheres seen from outside: culled. Opaque helices: culled when their wire
     is thin on screen (under THIN_WIRE_PX in radius), not when it is thick (its open
@@ -283,6 +293,7 @@ def _lattice_picture(size, antialias: bool, level: lod.LevelOfDetail):
     return image, sig
 
 
+@pytest.mark.usefixtures("helix_meshes")
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 @pytest.mark.parametrize("size", [(450, 300), (300, 200)])
 def test_lattice_at_its_detail_is_within_the_image_tolerance(size, antialias):
@@ -328,6 +339,7 @@ COARSE_BAD_FRACTION = 0.03
 COARSE_MEAN_DIFF = 1.5
 
 
+@pytest.mark.usefixtures("helix_meshes")
 @pytest.mark.parametrize("antialias", [False, True], ids=["draft", "aa"])
 def test_a_coarser_level_draws_fewer_polygons_near_the_full_picture(antialias):
     """``springscene vpython --lod 0.3`` (:func:`lod.coarser`): AtomicSolid-like springs

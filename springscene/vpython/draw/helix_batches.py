@@ -1,12 +1,15 @@
-"""Helices drawn into their batch: all helices of one look as one mesh at the renderer's
-level of detail, redrawn when the camera asks for another, their far side skipped when
-their wires are thin on screen (:mod:`..geometry.helices` makes the meshes)."""
+"""Helices drawn into their batch: as GlowScript draws them, a curve of chords each a
+ray-cast capsule (:func:`draw_capsules`, into a :class:`.capsules.CapsuleBatch`), or all
+helices of one look as one mesh (:func:`draw`); either at the renderer's level of detail,
+redrawn when the camera asks for another; a mesh's far side skipped when its wires are
+thin on screen (:mod:`..geometry.helices` makes the meshes and the chords)."""
 
 from __future__ import annotations
 
 import numpy as np
 
 from ..geometry import helices, placement
+from ...view.geometry import CHORDS_PER_COIL
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from . import culling
 
@@ -35,10 +38,59 @@ def draw(batch, objs, view, style, full: bool = False, lod: LevelOfDetail = DEFA
     batch.helix_arrays = a      # :func:`detail_changed` asks again when the camera moves
 
 
+MIN_CAPSULE_CHORDS = 2000   # a look's helices are capsules from this many chords (renderer)
+
+
+def chords(objs) -> int:
+    """The chords of the helices ``objs`` at VPython's full detail (60 a coil)."""
+    return int(sum(round(float(o._coils) * CHORDS_PER_COIL) for o in objs))
+
+
+def draw_capsules(batch, objs, view, style, full: bool = False,
+                  lod: LevelOfDetail = DEFAULT) -> None:
+    """Put the helices ``objs`` into the capsule batch ``batch`` as GlowScript draws a
+    helix: the curve through its ``coils * 60 + 1`` centre-line points, each chord a
+    capsule of the wire's radius in the helix's colour (:mod:`.capsules`; its wire a true
+    circle, so only the chords have a level of detail). A group of helices small on
+    screen gets fewer chords a coil, drafted or anti-aliased: the fewest of
+    :data:`..geometry.helices.CHORD_STEPS` whose chords stray at most ``lod.capsule_px``
+    (0.1 px by default) from the coil's circle as its nearest helix is seen
+    (:func:`..geometry.helices.capsule_chords`; ``full`` is the meshes' rule, not used).
+    Every helix's chords are made in one numpy pass per group; the batch's arrays are
+    rewritten in place."""
+    a = helices.helix_arrays(objs)
+    batch.helix_arrays, batch.helix_chords = a, {}
+    parts = []
+    for shape, idx in helices.groups(a).items():
+        chords = helices.capsule_chords(a, idx, view, lod.capsule_px)
+        line, slope = helices.centre_lines(*shape, chords, a["pos"][idx], a["R"][idx],
+                                           a["length"][idx], a["radius"][idx])
+        n = line.shape[1] - 1
+        rgb = np.clip(np.rint(a["color"][idx] * 255), 0, 255).astype(np.uint8)
+        wire = np.repeat(a["wire"][idx][:, None], n, axis=1)
+        joined = -wire                 # a joint's radius negative (:mod:`.capsules`)
+        parts.append((line[:, :-1].reshape(-1, 3), line[:, 1:].reshape(-1, 3),
+                      np.concatenate([wire[:, :1], joined[:, 1:]], axis=1).ravel(),
+                      np.concatenate([joined[:, :-1], wire[:, -1:]], axis=1).ravel(),
+                      np.repeat(rgb, n, axis=0),
+                      slope[:, :-1].reshape(-1, 3), slope[:, 1:].reshape(-1, 3)))
+        batch.helix_chords[shape] = chords
+    if not parts:
+        batch.hide()
+        return
+    start, end, r_start, r_end, rgb, t_start, t_end = (np.concatenate(c) for c in zip(*parts))
+    batch.set_segments(start, end, r_start, r_end, rgb, rgb, style, view, (t_start, t_end))
+
+
 def detail_changed(batch, view, full: bool, lod: LevelOfDetail = DEFAULT) -> bool:
-    """Whether ``batch``'s helices (drawn by :func:`draw`) need another level of detail
-    for ``view``: any group's chords or sides differ from those drawn."""
+    """Whether ``batch``'s helices (drawn by :func:`draw` or :func:`draw_capsules`) need
+    another level of detail for ``view``: any group's chords or sides differ from those
+    drawn."""
     a = batch.helix_arrays
+    chords = getattr(batch, "helix_chords", None)
+    if chords is not None:
+        return any(helices.capsule_chords(a, idx, view, lod.capsule_px) != chords.get(shape)
+                   for shape, idx in helices.groups(a).items())
     drawn = {(c, w): (n, s) for c, w, n, s, _ in batch.signature[1:]}
     return any(helices.detail(a, idx, view, full, lod) != drawn.get(shape)
                for shape, idx in helices.groups(a).items())

@@ -43,6 +43,7 @@ SCREEN_THINNED = ("lines", "tube", "points")   # drawn for the camera's view and
 INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod:`.instanced`)
 IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
 CAPSULES = True       # lit curves drawn as ray-cast capsules (:mod:`.capsules`)
+HELIX_CAPSULES = True  # opaque lit helices drawn as their chords' capsules (:mod:`.helix_batches`)
 POINT_IMPOSTORS = True   # lit points ray-cast as their 8 x 8 polyhedron, anti-aliased (:mod:`.impostors`)
 
 
@@ -121,7 +122,7 @@ class Renderer:
         for key, objs in groups.items():
             batch = self._batches.get(key)
             if batch is None:
-                batch = self._batches[key] = self._new_batch(key)
+                batch = self._batches[key] = self._new_batch(key, objs)
             members = np.fromiter(map(id, objs), dtype=np.int64, count=len(objs))  # 8 B each
             if batch.signature is not None \
                     and np.array_equal(getattr(batch, "members", None), members) \
@@ -168,11 +169,13 @@ class Renderer:
         spec = texturing.spec_of(value)
         return spec if spec is not None and texturing.load(spec) is not None else None
 
-    def _new_batch(self, key: tuple) -> _Batch:
+    def _new_batch(self, key: tuple, objs=()) -> _Batch:
         spec = key[-1] if key[0] in ("textured", "triangle") else None
         if spec is None:
             if key[0] in ("tube", "lines", "points", "sphere-points") and not key[2]:
                 return self._new_point_batch(key)
+            if key[0] == "helix" and self._ray_cast_helices(key, objs):
+                return CapsuleBatch(self.window, key)
             if not self._instanced(key):
                 return _Batch(self.window, key)
             spheres = key[0] == "sphere" and IMPOSTORS and impostors.available(self.window.ren_win)
@@ -191,6 +194,17 @@ class Renderer:
         # drafted, llvmpipe draws the meshes for less (RotatingPoints' shape: 0.89x)
         ray_cast = POINT_IMPOSTORS and self.antialias and capsules.available(self.window.ren_win)
         return (PointBatch if ray_cast else SphereBatch)(self.window, key)
+
+    def _ray_cast_helices(self, key: tuple, objs) -> bool:
+        """Opaque lit helices are drawn as GlowScript draws them, a curve of chords, as
+        ray-cast capsules (:func:`.helix_batches.draw_capsules`), where the GL has what
+        their shader needs and the look's first helices have
+        :data:`.helix_batches.MIN_CAPSULE_CHORDS` chords or more between them (fewer are a
+        mesh llvmpipe sets up in a millisecond or two, and the wiki's spring keeps the
+        picture of ``springscene render``); transparent and emissive ones keep meshes."""
+        return HELIX_CAPSULES and key[1] >= 1 and not key[3] \
+            and helix_batches.chords(objs) >= helix_batches.MIN_CAPSULE_CHORDS \
+            and capsules.available(self.window.ren_win)
 
     @staticmethod
     def _instanced(key: tuple) -> bool:
@@ -236,9 +250,11 @@ class Renderer:
         elif kind in surface_meshes.KINDS:      # VPython 6's faces and convex
             self._draw_meshes(batch, key, surface_meshes.meshes(objs), style)
             surface_meshes.one_sided(batch, key)
-        elif kind == "helix":             # one vectorised mesh, detail by screen size
-            helix_batches.draw(batch, objs, self.view, style,
-                               full=self.lod.full_helices(self.antialias), lod=self.lod)
+        elif kind == "helix":             # chords as capsules, or one vectorised mesh
+            draw = helix_batches.draw_capsules if isinstance(batch, CapsuleBatch) \
+                else helix_batches.draw
+            draw(batch, objs, self.view, style, full=self.lod.full_helices(self.antialias),
+                 lod=self.lod)
             batch.objs, batch.detail_view = objs, self._view_key()
         else:
             parts = [m for m in (kind_mesh(kind, o) for o in objs) if m is not None]

@@ -24,6 +24,7 @@ Two things make a lattice of springs fast:
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -119,6 +120,34 @@ def place(t: _Template, pos, R, length, radius, wire) -> tuple[np.ndarray, np.nd
     return world.reshape(-1, 3), np.matmul(t.normal_basis, cn).reshape(-1, 3)
 
 
+@functools.lru_cache(maxsize=MAX_TEMPLATES)
+def _centre_basis(coils: float, ccw: bool, chords: int) -> np.ndarray:
+    """(n, 4) per centre-line point of a unit helix (:class:`_Template`'s ``s``, sin and
+    cos of theta, 1): a point is this times the helix's coefficients (:func:`centre_lines`)."""
+    t = template(coils, ccw, chords, 1)
+    basis = np.column_stack([t.s, t.sin_t, t.cos_t, np.ones_like(t.s)])
+    basis.flags.writeable = False
+    return basis
+
+
+def centre_lines(coils: float, ccw: bool, chords: int, pos, R, length,
+                 radius) -> tuple[np.ndarray, np.ndarray]:
+    """The centre-line points (M, n, 3) of M helices of one shape, ``chords`` a coil:
+    GlowScript's ``coils * chords + 1`` points (primitives.js ``helix``, the curve its
+    chords are drawn as), and the line's tangents there (M, n, 3; d/ds, not unit), in
+    one batched product for all of them (as :func:`place`)."""
+    F = np.swapaxes(np.asarray(R, dtype=float), 1, 2)                # rows X, Y, Z
+    L = np.asarray(length, dtype=float)[:, None]
+    rad = np.asarray(radius, dtype=float)[:, None]
+    coef = np.stack([L * F[:, 0], rad * F[:, 1], rad * F[:, 2],
+                     np.asarray(pos, dtype=float).reshape(-1, 3)], axis=1)   # (M, 4, 3)
+    basis = _centre_basis(coils, ccw, chords)
+    k = template(coils, ccw, chords, 1).k
+    slope = np.column_stack([np.ones(len(basis)), k * basis[:, 2], -k * basis[:, 1],
+                             np.zeros(len(basis))])
+    return np.matmul(basis, coef), np.matmul(slope, coef)
+
+
 def _vertex_colors(colors: np.ndarray, size: int) -> np.ndarray:
     """RGB (uint8) of ``size`` vertices per helix of ``colors`` (M, 3) in 0..1."""
     return np.repeat(np.clip(np.rint(colors * 255), 0, 255).astype(np.uint8), size, axis=0)
@@ -166,6 +195,20 @@ def detail(a: dict, idx: np.ndarray, view, full: bool = False,
                      pixels_per_unit(view, end, radius + wire))
     return (steps_for(float(np.max(radius * ppu)), CHORD_STEPS, lod.helix_px),
             steps_for(float(np.max(wire * ppu)), SIDE_STEPS, lod.helix_px * lod.side_share))
+
+
+def capsule_chords(a: dict, idx: np.ndarray, view, px: float) -> int:
+    """Chords a coil for the helices ``idx`` drawn as capsules: the fewest of
+    :data:`CHORD_STEPS` whose sagitta stays within ``px`` pixels on the coil of the
+    nearest of them, as :func:`detail` takes it (GlowScript's 60 without a view or
+    with ``px`` 0)."""
+    if view is None or px <= 0:
+        return CHORDS_PER_COIL
+    pos, radius, wire = a["pos"][idx], a["radius"][idx], a["wire"][idx]
+    end = pos + a["R"][idx][:, :, 0] * a["length"][idx, None]
+    ppu = np.maximum(pixels_per_unit(view, pos, radius + wire),
+                     pixels_per_unit(view, end, radius + wire))
+    return steps_for(float(np.max(radius * ppu)), CHORD_STEPS, px)
 
 
 def mesh(objs, view=None, triangles: bool = True, full: bool = False,
@@ -219,5 +262,6 @@ def groups(a: dict) -> dict[tuple, np.ndarray]:
     return {shape: np.array(idx) for shape, idx in groups.items()}
 
 
-__all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "helix_arrays",
+__all__ = ["CHORD_STEPS", "SIDE_STEPS", "template", "place", "centre_lines", "capsule_chords",
+           "helix_arrays",
            "pixels_per_unit", "detail", "mesh", "groups"]
