@@ -116,6 +116,8 @@ bench: setup
 	$(BIN)/python benchmarks/bench_matter.py
 	$(BIN)/python benchmarks/bench_matter_render.py
 	$(BIN)/python benchmarks/bench_recording.py
+	$(BIN)/python benchmarks/bench_raycast.py
+	$(BIN)/python benchmarks/bench_batch.py
 
 baselines: setup
 	$(BIN)/python -m pytest tests/view tests/figures tests/vpython --regen-baselines

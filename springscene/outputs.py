@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import errno
 import os
+import shutil
 import tempfile
 from pathlib import Path
 from typing import Iterator
@@ -93,6 +94,20 @@ def hidden_name(path: Path) -> str:
     while len(os.fsencode(name)) > 200:
         name = name[:-1]
     return "." + name
+
+
+def remove_if_abandoned(folder: Path, pid: str) -> None:
+    """Remove a private working folder whose maker, process ``pid`` (as its name gives
+    it), is gone: killed outright (SIGKILL leaves no chance to clean up). A folder of this
+    process's, of a live process, or not named with a pid is left alone."""
+    if not pid.isdigit() or int(pid) == os.getpid():
+        return
+    try:
+        os.kill(int(pid), 0)
+    except ProcessLookupError:
+        shutil.rmtree(folder, ignore_errors=True)
+    except OSError:
+        pass
 
 
 @contextlib.contextmanager

@@ -19,7 +19,7 @@ from pathlib import Path
 from typing import Callable
 
 from ..errors import UserError
-from ..outputs import check_writable_folder
+from ..outputs import check_writable_folder, remove_if_abandoned
 from ..vpython.run.options import RunOptions
 from ..vpython.run.sandbox import unavailable as no_sandbox
 from . import job
@@ -148,21 +148,9 @@ def prepare_out_dir(out_dir: Path) -> None:
         raise UserError(f"--out-dir {out_dir}: is not a folder")
     check_writable_folder(out_dir, out_dir / "index.html", "--out-dir")
     for left in out_dir.rglob(".*.staging-*"):
-        _remove_if_abandoned(left)
+        remove_if_abandoned(left, left.name.rsplit("-", 1)[-1])
     for left in out_dir.rglob(".*.old-*"):
-        _remove_if_abandoned(left)
-
-
-def _remove_if_abandoned(folder: Path) -> None:
-    pid = folder.name.rsplit("-", 1)[-1]
-    if not pid.isdigit() or int(pid) == os.getpid():
-        return
-    try:
-        os.kill(int(pid), 0)
-    except ProcessLookupError:
-        shutil.rmtree(folder, ignore_errors=True)
-    except OSError:
-        pass
+        remove_if_abandoned(left, left.name.rsplit("-", 1)[-1])
 
 
 def run_batch(paths: list[str], out_dir: str | Path, settings: Settings = Settings(), *,

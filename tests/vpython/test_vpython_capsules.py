@@ -11,7 +11,6 @@ import pytest
 import springscene.vpython.api as vp
 from springscene.vpython.draw import capsules, renderer
 from springscene.vpython.draw.capsules import CapsuleBatch
-from springscene.vpython.draw.impostors import SphereBatch
 from springscene.vpython.draw.renderer import Renderer
 
 from imagecompare import MAX_BAD_FRACTION, compare
@@ -158,39 +157,6 @@ def test_emissive_curves_and_missing_extensions_keep_meshes(monkeypatch):
     image = r.frame()
     assert {type(b) for b in r._batches.values()} == {renderer._Batch}
     assert (image.max(axis=2) > 24).sum() > 500
-    r.close()
-
-
-def test_points_are_instances_and_small_ones_can_be_impostors(monkeypatch):
-    """By default every point is an instance of its 8-slice sphere; with
-    ``POINT_IMPOSTORS`` those under ~5 px in radius go to the sphere impostors, the
-    others stay instances, and the impostors' world radius follows the range
-    (VPython's ``2 range / width`` a pixel) with nothing rebuilt."""
-    vp.scene.width, vp.scene.height = 300, 200
-    vp.scene.range = 10
-    vp.points(pos=[vp.vector(-3, 0, 0), vp.vector(0, 0, 0)], radius=3)
-    vp.points(pos=[vp.vector(3, 0, 0)], radius=9)
-    r = Renderer(vp.scene, antialias=False)
-    r.frame()
-    (batch,) = r._batches.values()
-    assert isinstance(batch, SphereBatch) and batch.instances == 3 and batch.impostors.empty
-    r.close()
-    monkeypatch.setattr(renderer, "POINT_IMPOSTORS", True)
-    r = Renderer(vp.scene, antialias=False)
-    image, view = r.frame(), r.view
-    (batch,) = r._batches.values()
-    assert isinstance(batch, SphereBatch)
-    assert batch.impostors.mesh.n_points == 2 and batch.instances == 1
-    radius = batch.impostors.mesh["radius"].copy()
-    assert radius == pytest.approx(3 * 2 * 10 / 300 * 0.971, rel=1e-5)
-    mesh = batch.impostors.mesh
-    vp.scene.range = 8
-    r.frame()
-    assert batch.impostors.mesh is mesh
-    assert batch.impostors.mesh["radius"] == pytest.approx(radius * 0.8, rel=1e-5)
-    grey = image.max(axis=2)
-    for col, row in view.project(np.array([[-3.0, 0, 0], [0, 0, 0], [3, 0, 0]])):
-        assert grey[int(round(row)), int(round(col))] > 24
     r.close()
 
 

@@ -216,3 +216,19 @@ def test_the_command_writes_the_files_up_to_the_error_and_says_where(tmp_path):
     run = raised.value.run
     assert run.frames == FRAMES and run.times[-1] == T and run.ended == "error"
     assert run.error == read(out / "run.jsonl").error
+
+
+def test_the_recorded_line_is_the_programs_though_a_library_raised(tmp_path):
+    """An error raised inside a library the program called (json here) is recorded at the
+    program's line that called it, not at the library's."""
+    prog = write(tmp_path, """
+        import json
+        from vpython import *
+        b = sphere()
+        rate(50)
+        settings = json.loads("{not json")
+    """)
+    with pytest.raises(ProgramRaised):
+        run_program(prog, tmp_path / "run.jsonl", RunOptions(fps=FPS))
+    error = read(tmp_path / "run.jsonl").error
+    assert error["type"] == "JSONDecodeError" and error["line"] == 6

@@ -33,7 +33,7 @@ from ..geometry import meshes, object_meshes, placement, point_meshes, textured
 from ..geometry.lod import DEFAULT, LevelOfDetail
 from ..geometry.object_meshes import TEMPLATES, kind_mesh, rgb8, template
 from .batches import Batch, TextureCache, TexturedBatch
-from .impostors import SphereBatch
+from .impostors import PointBatch, SphereBatch
 from .instanced import InstancedBatch
 from .capsules import CapsuleBatch
 from . import capsules, impostors
@@ -44,7 +44,7 @@ INSTANCING = True     # template kinds drawn as instances of one unit mesh (:mod
 IMPOSTORS = True      # small opaque spheres drawn as impostors (:mod:`.impostors`)
 CAPSULES = True       # lit curves drawn as ray-cast capsules (:mod:`.capsules`)
 HELIX_CAPSULES = True  # opaque lit helices drawn as their chords' capsules (:mod:`.helix_batches`)
-POINT_IMPOSTORS = False  # small lit points as sphere impostors (:mod:`.impostors`): off, see _draw_point_spheres
+POINT_IMPOSTORS = True   # lit points ray-cast as their 8 x 8 polyhedron, anti-aliased (:mod:`.impostors`)
 
 
 _Batch = Batch       # one actor and mesh per kind and look (:mod:`.batches`)
@@ -189,8 +189,11 @@ class Renderer:
         if key[0] in ("tube", "lines"):
             ray_cast = CAPSULES and capsules.available(self.window.ren_win)
             return (CapsuleBatch if ray_cast else _Batch)(self.window, key)
-        ray_cast = IMPOSTORS and impostors.available(self.window.ren_win)
-        return (SphereBatch if ray_cast else _Batch)(self.window, key)
+        if not (IMPOSTORS and impostors.available(self.window.ren_win)):
+            return _Batch(self.window, key)
+        # drafted, llvmpipe draws the meshes for less (RotatingPoints' shape: 0.89x)
+        ray_cast = POINT_IMPOSTORS and self.antialias and capsules.available(self.window.ren_win)
+        return (PointBatch if ray_cast else SphereBatch)(self.window, key)
 
     def _ray_cast_helices(self, key: tuple, objs) -> bool:
         """Opaque lit helices are drawn as GlowScript draws them, a curve of chords, as
@@ -364,14 +367,10 @@ class Renderer:
         self._draw_meshes(batch, key, [m for m in parts if m is not None], style)
 
     def _draw_point_spheres(self, batch, key, objs, style, rng, w) -> None:
-        """Points as instances of their 8-slice sphere (their world size for this range
-        recomputed, nothing rebuilt), with :data:`POINT_IMPOSTORS` those small on screen
-        as sphere impostors. Off: an impostor is a true sphere, the point's mesh a coarse
-        8-slice one, and they differ more than VPython's 30-slice sphere does (drafted,
-        1.5 and 3 px points: 0.09 and 0.36 % of pixels off by more than 24/255, anti-
-        aliased 0.18 and 0.50 %; the fidelity scene ``points`` falls to IoU 0.979
-        against real VPython), for 7 % of RotatingPoints' time drafted, 14 %
-        anti-aliased."""
+        """Points as spheres sized for this range (nothing rebuilt): with
+        :data:`POINT_IMPOSTORS` (a :class:`.PointBatch`) every one ray-cast as the exact
+        polyhedron of VPython's 8 x 8 point mesh (:class:`.impostors.PointImpostors`),
+        else instances of that mesh."""
         arrays = [point_meshes.balls(key[0], o, rng, w) for o in objs]
         arrays = [a for a in arrays if a is not None]
         if not arrays:
@@ -380,13 +379,18 @@ class Renderer:
         pos, diam, rgb = (np.concatenate(c) for c in zip(*arrays))
         size = np.repeat(diam[:, None], 3, axis=1)
         small = np.zeros(len(pos), dtype=bool)
-        if self.view is not None and POINT_IMPOSTORS:
-            small = impostors.small(self._radius_px(pos, diam / 2), self.lod.sphere_steps,
-                                    self.lod.sphere_px)
+        if isinstance(batch, PointBatch):
+            small = diam > 0                # a negative size: its mesh turned inside out
+            batch.impostors.set_axes(self._view_rotation())
         R = np.broadcast_to(np.eye(3), (int((~small).sum()), 3, 3))
         batch.set_spheres(point_meshes.point_sphere(), ("points", point_meshes.POINT_SLICES),
-                          pos, R, size, rgb, style, small, point_meshes.POINT_EQUAL_AREA)
+                          pos, R, size, rgb, style, small, 1.0)
         culling.cull_back_faces(batch, style, self.view, pos, diam / 2)
+
+    def _view_rotation(self) -> np.ndarray:
+        """The camera's rotation, world to view coordinates (3 x 3), as VTK draws it."""
+        m = self.window.renderer.GetActiveCamera().GetViewTransformMatrix()
+        return np.array([[m.GetElement(i, j) for j in range(3)] for i in range(3)])
 
     def _radius_px(self, pos: np.ndarray, radius: np.ndarray) -> np.ndarray:
         """Radii in pixels on screen of spheres at ``pos``, for this view."""

@@ -4,7 +4,8 @@ GlowScript 3.2 (bundled with vpython 7.6.5) draws neither as GL points or lines:
 
 - ``points``: each point is a ``simple_sphere`` (primitives.js ``__push_and_append``),
   drawn with the renderer's ``simple_sphere`` model, ``Mesh.makeSphere(0.5, 8)``: an
-  8 x 8 UV sphere, lit like any sphere. For ``size_units="pixels"`` (the default)
+  8 x 8 UV sphere (8 bands of latitude, 8 sectors of longitude), lit like any sphere
+  (ray-cast as that polyhedron where the GL allows, :class:`..draw.impostors.PointImpostors`). For ``size_units="pixels"`` (the default)
   WebGLRenderer.js ``render`` resizes them at every render to a diameter of
   ``20 s`` (radius 0, the default) or ``2 s radius``, with ``s = 2 range / width``:
   about 12.5 px (radius 0) or 1.25 radius px across on a 640 x 400 canvas, in the
@@ -28,19 +29,34 @@ from .thinning import thin_line
 
 POINT_SLICES = 8          # simple_sphere: Mesh.makeSphere(0.5, 8)
 POINT_DIAMETER = 20.0     # in units of s = 2 range / width, for radius 0
-# the radius of the circle whose area is that of :func:`point_sphere`'s outline seen from
-# the side (the mean over directions at right angles to its poles, measured: 0.9709): a
-# point drawn as an impostor of this radius covers the pixels its mesh covers
-POINT_EQUAL_AREA = 0.971
 
 
 @functools.cache
 def point_sphere() -> placement.Mesh:
-    """The ``simple_sphere`` model: an 8 x 8 UV sphere of diameter 1 with its poles on y,
-    as mesh.js ``makeSphere`` builds it (so its outline seen along z has 16 sides)."""
-    m = meshes.sphere(POINT_SLICES)            # poles on z
-    turn = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])   # z -> y
-    return placement.Mesh(m.points @ turn.T, m.normals @ turn.T, m.triangles)
+    """The ``simple_sphere`` model as mesh.js ``makeSphere(0.5, 8)`` builds it: diameter
+    1, its poles on y, 8 bands of latitude (rings every 22.5 degrees) and 8 sectors of
+    longitude (every 45 degrees from the x axis), its vertices on the sphere and their
+    normals their directions; triangles wound outwards."""
+    n = POINT_SLICES
+    theta = np.arange(1, n) * np.pi / n                 # the rings between the poles
+    phi = np.arange(n) * 2 * np.pi / n
+    rings = np.stack([np.outer(np.sin(theta), np.cos(phi)),
+                      np.repeat(np.cos(theta)[:, None], n, axis=1),
+                      np.outer(np.sin(theta), np.sin(phi))], axis=2).reshape(-1, 3)
+    directions = np.vstack([[0.0, 1.0, 0.0], rings, [0.0, -1.0, 0.0]])
+    ring = (np.arange(n - 1)[:, None] * n + 1)          # each ring's first vertex
+    j, k = np.arange(n), (np.arange(n) + 1) % n
+    bottom = len(directions) - 1
+    tris = [np.column_stack([np.zeros(n, dtype=int), ring[0] + k, ring[0] + j])]
+    for a, b in zip(ring[:-1], ring[1:]):
+        tris += [np.column_stack([a + j, a + k, b + j]), np.column_stack([a + k, b + k, b + j])]
+    tris.append(np.column_stack([np.full(n, bottom), ring[-1] + j, ring[-1] + k]))
+    triangles = np.vstack(tris)
+    corners = directions[triangles]
+    outward = np.einsum("ij,ij->i", np.cross(corners[:, 1] - corners[:, 0],
+                                              corners[:, 2] - corners[:, 0]), corners.sum(axis=1))
+    triangles = np.where((outward < 0)[:, None], triangles[:, ::-1], triangles)
+    return placement.Mesh(directions / 2, directions, triangles)
 
 
 def pixel_scale(range_: float, width: int) -> float:

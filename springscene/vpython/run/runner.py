@@ -449,15 +449,18 @@ def _run(code: types.CodeType, names: dict, path: Path, limit: str) -> str:
     except CanvasSizeError as exc:   # one line, at the program's line that set the size
         raise ProgramError(f"springscene: {_program_line(exc)}{exc}") from None
     except BaseException as exc:     # the program's own error, with its own traceback
-        raise _raised(exc) from None
+        raise _raised(exc, path) from None
     return "program"
 
 
-def _raised(exc: BaseException) -> ProgramRaised:
+def _raised(exc: BaseException, path: Path) -> ProgramRaised:
     """The program's own exception as springscene reports it (its program time ``t`` is
-    the clock's, filled in by the run)."""
+    the clock's, filled in by the run; its ``line`` the program file's last line in the
+    traceback, not one of a library the program called)."""
     told = _user_traceback(exc)
-    lines = [f.lineno for f in traceback.extract_tb(exc.__traceback__) if not _ours(f.filename)]
+    frames = traceback.extract_tb(exc.__traceback__)
+    lines = [f.lineno for f in frames if f.filename == str(path)] or \
+        [f.lineno for f in frames if not _ours(f.filename)]
     return ProgramRaised(told, {"type": type(exc).__name__, "message": str(exc), "t": None,
                                 "line": lines[-1] if lines else None, "traceback": told})
 

@@ -55,7 +55,7 @@ from pathlib import Path
 from typing import Callable
 
 from ...errors import OutputError, ProgramError, UserError
-from ...outputs import hidden_name
+from ...outputs import hidden_name, remove_if_abandoned
 from .options import RunOptions, check_request
 from .runner import ProgramRaised, ProgramResult
 from .report import (SandboxMemory, Watch, ended_line, memory_limit, parse_size, peak_of,
@@ -129,15 +129,7 @@ def _remove_abandoned(out: Path) -> None:
     """The private folders of earlier runs to ``out`` whose springscene was killed outright
     (SIGKILL leaves no chance to clean up): their process is gone, so they go too."""
     for folder in (out.parent or Path(".")).glob(f"{glob.escape(hidden_name(out))}.*.run"):
-        pid = folder.name[:-len(".run")].rsplit(".", 2)[-2]
-        if not pid.isdigit() or int(pid) == os.getpid():
-            continue
-        try:
-            os.kill(int(pid), 0)
-        except ProcessLookupError:
-            shutil.rmtree(folder, ignore_errors=True)
-        except OSError:
-            pass
+        remove_if_abandoned(folder, folder.name[:-len(".run")].rsplit(".", 2)[-2])
 
 
 @contextlib.contextmanager

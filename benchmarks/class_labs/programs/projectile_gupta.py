@@ -1,0 +1,35 @@
+GlowScript 3.2 VPython
+# Lab 2: projectile with air resistance (baseball) -- gupta
+scene.width = 800
+scene.height = 450
+scene.center = vec(18, 6, 0)
+scene.range = 22
+
+ground = box(pos=vec(20, -0.3, 0), size=vec(50, 0.5, 6), color=color.green)
+proj = sphere(pos=vec(0, 0, 0), radius=0.6, color=color.yellow)
+attach_trail(proj, color=color.red)
+m = 0.145        # kg
+C = 0.00121    # 1/2 rho Cd A, kg/m
+g = vec(0, -9.8, 0)
+theta = 50*pi/180
+v = 24*vec(cos(theta), sin(theta), 0)
+dt = 0.01
+t = 0
+ghost = sphere(pos=vec(0, 0, 0), radius=0.4, color=color.white, make_trail=True)
+vg = v
+graph(title="height", xtitle="t (s)", ytitle="y (m)")
+yplot = gcurve(color=color.red)
+
+while proj.pos.y >= 0:
+    rate(100)
+    Fdrag = -C*mag(v)*v
+    F = m*g + Fdrag
+    v = v + F/m*dt
+    proj.pos = proj.pos + v*dt
+    vg = vg + g*dt
+    ghost.pos = ghost.pos + vg*dt
+    yplot.plot(pos=(t, proj.pos.y))
+    t = t + dt
+
+print("range:", proj.pos.x)
+print("time:", t)
