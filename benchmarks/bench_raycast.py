@@ -85,47 +85,36 @@ while True:
         s.axis = b.pos - a.pos
 '''
 
-CURVE = '''# one curve of 15,000 random segments of random radius and colour, turning
+# a random walk of 15,000 steps inside the unit ball, each point of random size and colour
+# appended to SHAPE (a curve or a points object), then the scene turned each render
+WALK = '''# {what}
 from vpython import *
 from random import random, seed
-seed(5)
+seed({seed})
 scene.width = scene.height = 600
 scene.background = color.white
 scene.range = 1.3
-walk = curve()
+{name} = {shape}()
 here = vector(0, 0, 0)
 for i in range(15000):
     step = here + 0.1 * vector.random()
     while mag(step) > 1:
         step = here + 0.1 * vector.random()
     here = step
-    walk.append(pos=here, radius=0.001 + 0.03 * random(),
-                color=(vector(1, 1, 1) + vector.random()) / 2)
+    {name}.append(pos=here, {size},
+    {pad}color=(vector(1, 1, 1) + vector.random()) / 2)
 while True:
     rate(60)
-    walk.rotate(angle=0.005, axis=vector(0, 1, 0))
+    {turn}
 '''
-
-POINTS = '''# 15,000 points of random size and colour in a ball, the camera turning around them
-from vpython import *
-from random import random, seed
-seed(7)
-scene.width = scene.height = 600
-scene.background = color.white
-scene.range = 1.3
-cloud = points()
-here = vector(0, 0, 0)
-for i in range(15000):
-    step = here + 0.1 * vector.random()
-    while mag(step) > 1:
-        step = here + 0.1 * vector.random()
-    here = step
-    cloud.append(pos=here, radius=3 + 10 * random(),
-                 color=(vector(1, 1, 1) + vector.random()) / 2)
-while True:
-    rate(60)
-    scene.forward = scene.forward.rotate(angle=-0.005, axis=vector(0, 1, 0))
-'''
+CURVE = WALK.format(
+    what="one curve of 15,000 random segments of random radius and colour, turning",
+    seed=5, name="walk", shape="curve", size="radius=0.001 + 0.03 * random()", pad=" " * 12,
+    turn="walk.rotate(angle=0.005, axis=vector(0, 1, 0))")
+POINTS = WALK.format(
+    what="15,000 points of random size and colour in a ball, the camera turning around them",
+    seed=7, name="cloud", shape="points", size="radius=3 + 10 * random()", pad=" " * 13,
+    turn="scene.forward = scene.forward.rotate(angle=-0.005, axis=vector(0, 1, 0))")
 
 STAND_INS = {"atoms": ATOMS, "curve": CURVE, "points": POINTS}
 VIDEO = ("curve", "points")          # timed for 3 s of video too (the issue's target)

@@ -78,22 +78,33 @@ EXTENSIONS = ("GL_ARB_gpu_shader5", "GL_ARB_sample_shading")
 # the extensions declared in a shader (the capsules' too)
 DECLARE = ("//VTK::System::Dec",
            "//VTK::System::Dec\n" + "".join(f"#extension {e} : require\n" for e in EXTENSIONS))
+# one sample's ray (sampleDir from samplePos, in the sphere's unit frame), cast again
+# from its own position on the impostor's triangle as VTK casts the pixel's
+_SAMPLE_RAY = (
+    'vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;',
+    'vec3 sampleDir = normalize(sampleVC);',
+    'vec3 samplePos = vec3(0.0);',
+    'if (cameraParallel != 0) {',
+    '  sampleDir = vec3(0.0, 0.0, -1.0);',
+    '  samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }',
+    'else if (length(sampleVC) > radiusVCVSOutput*3.0) {',
+    '  samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }',
+    'samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;',
+)
+
+
+def _sample_ray(indent: str) -> str:
+    """:data:`_SAMPLE_RAY` as GLSL lines at ``indent``."""
+    return "".join(f"{indent}{line}\n" for line in _SAMPLE_RAY)
+
+
 # in vtkOpenGLSphereMapper's fragment shader (VTK 9.5), after the pixel's ray is cast:
 # b and d are the quadratic's terms for the pixel's centre; the samples' rays are cast
 # again from their own positions on the impostor's triangle
 _COVERAGE = ("  if (d < 0.0) { discard; }", """
   int coverage = 0;
   for (int i = 0; i < gl_NumSamples; ++i) {
-    vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
-    vec3 sampleDir = normalize(sampleVC);
-    vec3 samplePos = vec3(0.0);
-    if (cameraParallel != 0) {
-      sampleDir = vec3(0.0, 0.0, -1.0);
-      samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
-    else if (length(sampleVC) > radiusVCVSOutput*3.0) {
-      samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
-    samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
-    float sb = 2.0*dot(samplePos, sampleDir);
+""" + _sample_ray("    ") + """    float sb = 2.0*dot(samplePos, sampleDir);
     if (sb*sb - 4.0*(dot(samplePos, samplePos) - 1.0) >= 0.0) { coverage |= (1 << i); }
   }
   if (coverage == 0) { discard; }
@@ -195,16 +206,7 @@ _POINT_COVERAGE = ("  if (d < 0.0) { discard; }", """
     float reach = dot(qc, qc) < 1e-6 ? 1.0 : length(qc)/pointCentre.y;
     coverage = 0;
     for (int i = 0; i < gl_NumSamples; ++i) {
-      vec3 sampleVC = interpolateAtSample(vertexVCVSOutput, i).xyz;
-      vec3 sampleDir = normalize(sampleVC);
-      vec3 samplePos = vec3(0.0);
-      if (cameraParallel != 0) {
-        sampleDir = vec3(0.0, 0.0, -1.0);
-        samplePos = sampleVC + vec3(0.0, 0.0, 3.0*radiusVCVSOutput); }
-      else if (length(sampleVC) > radiusVCVSOutput*3.0) {
-        samplePos = sampleVC - sampleDir*3.0*radiusVCVSOutput; }
-      samplePos = (samplePos - centerVCVSOutput)/radiusVCVSOutput;
-      vec3 qs = samplePos - dot(samplePos, sampleDir)*sampleDir;
+""" + _sample_ray("      ") + """      vec3 qs = samplePos - dot(samplePos, sampleDir)*sampleDir;
       if (dot(qs, qs) <= reach*reach) { coverage |= (1 << i); }
     }
   }
