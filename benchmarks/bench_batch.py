@@ -8,9 +8,13 @@ for 3 s of program time with the options a batch uses (its video, page and recor
 ``--timeout`` and ``--max-memory``), and measured three ways:
 
 - **single runs**: ``springscene vpython PROGRAM`` one after another; their wall times summed;
-- **the batch**: ``springscene batch CLASS --jobs 2``; its wall time against that sum
-  (target: at most 0.6x), and the peak memory of its whole process tree (sampled from
-  /proc) against jobs x the largest single run's tree + 200 MB;
+- **the batch**: ``springscene batch CLASS --jobs 2``, sandboxed as by default and then
+  with ``--no-sandbox`` (as the single runs are); its wall time against that sum (target:
+  at most 0.6x), and the peak memory of its whole process tree (sampled from /proc)
+  against jobs x the largest single run's tree + 200 MB. Memory is the tree's PSS, which
+  counts a page shared by several processes once: the batch's job processes and their
+  programs are forks of one warm process and share its pages, which a sum of RSS would
+  count once in each (that sum is printed beside it);
 - **a Dask cluster** (when ``distributed`` is importable): the same batch through a
   2-worker ``distributed.LocalCluster`` (``--scheduler``): its rows must be the local
   batch's but for the times, its videos byte-identical.
@@ -88,31 +92,37 @@ def _children() -> dict[int, list[int]]:
     return children
 
 
-def tree_rss(root: int) -> int:
-    """The resident memory of ``root`` and all its descendants, in bytes."""
-    children, total, todo = _children(), 0, [root]
-    page = os.sysconf("SC_PAGE_SIZE")
+def tree_memory(root: int) -> tuple[int, int]:
+    """The resident memory of ``root`` and all its descendants, in bytes, two ways: the sum
+    of their RSS, which counts a page shared by several processes (a fork's, a library's)
+    once in each, and of their PSS, which shares such a page out among them (the memory
+    the tree really holds)."""
+    children, rss, pss, todo = _children(), 0, 0, [root]
     while todo:
         pid = todo.pop()
         todo.extend(children.get(pid, []))
         try:
-            with open(f"/proc/{pid}/statm") as statm:
-                total += int(statm.read().split()[1]) * page
+            with open(f"/proc/{pid}/smaps_rollup") as rollup:
+                fields = dict(line.split(":", 1) for line in rollup if ":" in line)
         except OSError:
-            pass
-    return total
+            continue
+        rss += int(fields.get("Rss", "0 kB").split()[0]) * 1024
+        pss += int(fields.get("Pss", "0 kB").split()[0]) * 1024
+    return rss, pss
 
 
-def measured(command: list[str], log: Path) -> tuple[int, float, int]:
+def measured(command: list[str], log: Path) -> tuple[int, float, dict]:
     """Runs ``command`` (its output into ``log``): its exit status, wall time (s) and the
-    peak memory of its process tree (bytes, sampled every :data:`SAMPLE` s)."""
-    start, peak = time.perf_counter(), 0
+    peak memory of its process tree (bytes, sampled every :data:`SAMPLE` s: PSS, and under
+    ``"rss"`` the RSS summed)."""
+    start, peak = time.perf_counter(), {"pss": 0, "rss": 0}
     with open(log, "wb") as out:
         process = subprocess.Popen(command, stdout=out, stderr=subprocess.STDOUT,
                                    stdin=subprocess.DEVNULL, env=environment())
         try:
             while process.poll() is None:
-                peak = max(peak, tree_rss(process.pid))
+                rss, pss = tree_memory(process.pid)
+                peak = {"pss": max(peak["pss"], pss), "rss": max(peak["rss"], rss)}
                 time.sleep(SAMPLE)
         finally:                        # (interrupted: springscene ends its own children)
             if process.poll() is None:
@@ -140,7 +150,7 @@ def single_runs(programs: list[Path], out: Path) -> list[dict]:
                      "wall": wall, "peak": peak,
                      "last_line": error[0] if error else _last_line(text)})
         print(f"  {program.name}: {rows[-1]['status']}, {wall:.1f} s, "
-              f"{peak / 2 ** 20:.0f} MiB", flush=True)
+              f"{peak['pss'] / 2 ** 20:.0f} MiB", flush=True)
     return rows
 
 
@@ -149,7 +159,7 @@ def _last_line(text: str) -> str:
     return lines[-1].strip() if lines else ""
 
 
-def batch_run(folder: Path, out: Path, jobs: int, *extra: str) -> tuple[float, int, list]:
+def batch_run(folder: Path, out: Path, jobs: int, *extra: str) -> tuple[float, dict, list]:
     """``springscene batch`` on the class: its wall time, peak memory and summary rows."""
     out.mkdir(parents=True, exist_ok=True)
     status, wall, peak = measured(
@@ -220,9 +230,30 @@ def report_programs(singles: list[dict], batch_rows: list, expected: dict) -> No
         flag = "" if row["status"] == want["expected"] else "   <-- not as expected"
         print(f"{row['program']:28} {want['dialect']:7} {want['expected']:8} "
               f"{row['status']:8} {reached:>8} {row['wall']:6.1f} "
-              f"{row['peak'] / 2 ** 20:6.0f} {other.get('status', '-'):8}{flag}")
+              f"{row['peak']['pss'] / 2 ** 20:6.0f} {other.get('status', '-'):8}{flag}")
         if row["status"] != "ran":
             print(f"    {row['last_line'][:150]}")
+
+
+def report_batch(flags: str, wall: float, peak: dict, rows: list, singles: list[dict],
+                 jobs: int) -> None:
+    """A batch's wall time against the single runs' sum, and its peak memory against
+    jobs x the largest single run + 200 MiB (PSS, the target's measure; RSS summed beside)."""
+    total = sum(row["wall"] for row in singles)
+    print(f"springscene batch {flags}: {wall:.1f} s, {wall / total:.2f}x the sum of the "
+          f"single runs (target 0.6x); {uptime()}")
+    own = sum(row.get("wall_seconds") or 0 for row in rows)
+    print(f"  its programs' own wall times sum to {own:.1f} s, {own / total:.2f}x their "
+          f"single runs (each slowed by sharing the cores); {own / wall:.2f} at once")
+    ran = [row for row in singles if row["status"] == "ran"]
+    for what, among in (("the largest run", singles), ("the largest that ran", ran)):
+        for measure in ("pss", "rss"):
+            big = max(row["peak"][measure] for row in among)
+            allowed = jobs * big + HEADROOM
+            print(f"  peak memory of its tree ({measure.upper()}) "
+                  f"{peak[measure] / 2 ** 20:.0f} MiB against {jobs} x {what} "
+                  f"({big / 2 ** 20:.0f} MiB) + 200 MiB = {allowed / 2 ** 20:.0f} MiB: "
+                  f"{peak[measure] / allowed:.2f}x the target")
 
 
 def uptime() -> str:
@@ -252,25 +283,18 @@ def main() -> None:
         print("single runs (springscene vpython, one after another):")
         singles = single_runs(programs, out / "single")
         total = sum(row["wall"] for row in singles)
-        largest = max(singles, key=lambda row: row["peak"])
+        largest = max(singles, key=lambda row: row["peak"]["pss"])
         ran = [row for row in singles if row["status"] == "ran"]
-        print(f"  the sum: {total:.1f} s; the largest run's tree {largest['peak'] / 2 ** 20:.0f} "
-              f"MiB ({largest['program']}); of those that ran, "
-              f"{max(row['peak'] for row in ran) / 2 ** 20:.0f} MiB; {uptime()}")
+        print(f"  the sum: {total:.1f} s; the largest run's tree "
+              f"{largest['peak']['pss'] / 2 ** 20:.0f} MiB ({largest['program']}); of those "
+              f"that ran, {max(row['peak']['pss'] for row in ran) / 2 ** 20:.0f} MiB; {uptime()}")
         batch_rows: list = []
         if not args.single_only:
-            wall, peak, batch_rows = batch_run(out / "class", out / "batch", args.jobs)
-            print(f"springscene batch --jobs {args.jobs}: {wall:.1f} s, {wall / total:.2f}x the "
-                  f"sum of the single runs (target 0.6x); {uptime()}")
-            own = sum(row.get("wall_seconds") or 0 for row in batch_rows)
-            print(f"  its programs' own wall times sum to {own:.1f} s, {own / total:.2f}x their "
-                  f"single runs (each slowed by sharing the cores); {own / wall:.2f} at once")
-            for what, rows in (("the largest run", singles), ("the largest that ran", ran)):
-                big = max(row["peak"] for row in rows)
-                allowed = args.jobs * big + HEADROOM
-                print(f"  peak memory of its tree {peak / 2 ** 20:.0f} MiB against {args.jobs} x "
-                      f"{what} ({big / 2 ** 20:.0f} MiB) + 200 MiB = {allowed / 2 ** 20:.0f} MiB: "
-                      f"{peak / allowed:.2f}x the target")
+            for name, extra in (("batch", ()), ("batch-unsandboxed", ("--no-sandbox",))):
+                wall, peak, rows = batch_run(out / "class", out / name, args.jobs, *extra)
+                report_batch(" ".join(("--jobs", str(args.jobs), *extra)), wall, peak, rows,
+                             singles, args.jobs)
+                batch_rows = batch_rows or rows
         report_programs(singles, batch_rows, manifest(out / "class"))
         if not args.single_only:
             line = cluster_compare(out / "class", out, args.jobs, batch_rows)

@@ -46,6 +46,9 @@ LOG = "log.txt"
 THUMBNAIL = "thumbnail.png"
 THUMBNAIL_WIDTH = 320               # px: the index's cards
 _ROOT = str(Path(__file__).resolve().parents[2])      # where springscene is
+# how a job's interpreter starts: not the working folder on the path (the program's folder
+# is), and this springscene found last where no installation provides it
+START = f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r})"
 _WHERE = re.compile(r"at ([-+.\deE]+) s of program time \((\d+) frame")
 # what a supervisor's line says of how the run was stopped, the same wherever it ran (not
 # the memory used when it was stopped, which varies)
@@ -79,19 +82,29 @@ def start(job: dict, env: dict | None = None) -> subprocess.Popen:
     """:func:`main` in a fresh interpreter, in a session of its own (a terminal's Ctrl-C
     reaches the batch, which ends it), writing ``log.txt`` in the staging folder; killed
     by the kernel if the thread that started it dies."""
+    code = f"{START}; from springscene.batch.job import main; sys.exit(main())"
+    with open(log_of(job), "wb") as log:
+        return subprocess.Popen([sys.executable, "-c", code, json.dumps(job)],
+                                cwd=working_folder(job),
+                                stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
+                                start_new_session=True, env=env, preexec_fn=die_with_parent)
+
+
+def log_of(job: dict) -> Path:
+    """The job's ``log.txt``, in its staging folder (made here)."""
     folder = Path(job["folder"])
     folder.mkdir(parents=True, exist_ok=True)
-    code = (f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r}); "
-            "from springscene.batch.job import main; sys.exit(main())")
-    with open(folder / LOG, "wb") as log:
-        return subprocess.Popen([sys.executable, "-c", code, json.dumps(job)],
-                                cwd=job.get("cwd") or folder,
-                                stdin=subprocess.DEVNULL, stdout=log, stderr=subprocess.STDOUT,
-                                start_new_session=True, env=env, preexec_fn=_die_with_parent)
+    return folder / LOG
 
 
-def _die_with_parent() -> None:
-    """SIGTERM when the batch's thread that started this process ends (PR_SET_PDEATHSIG)."""
+def working_folder(job: dict) -> Path:
+    """Where the job's process (and its program) runs: the program's own folder when it has
+    one of its own, else the staging folder."""
+    return Path(job.get("cwd") or job["folder"])
+
+
+def die_with_parent() -> None:
+    """SIGTERM when the thread that started this process ends (PR_SET_PDEATHSIG)."""
     if sys.platform == "linux":
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGTERM, 0, 0, 0)
 
@@ -105,8 +118,12 @@ def stop(process: subprocess.Popen) -> None:
 
 
 def main() -> int:
+    """The job's process started fresh (:func:`start`): its request is its argument."""
+    return run(json.loads(sys.argv[1]))
+
+
+def run(job: dict) -> int:
     """The job's process: the program run, its thumbnail and grades, ``result.json``."""
-    job = json.loads(sys.argv[1])
     folder, start_time = Path(job["folder"]), time.monotonic()
     row = _run(job)
     row["wall_seconds"] = round(time.monotonic() - start_time, 3)
@@ -116,7 +133,7 @@ def main() -> int:
     video = folder / f"{job['stem']}{job['suffix']}"
     if video.is_file():
         try:
-            _thumbnail(video, folder / THUMBNAIL)
+            _thumbnail(video, folder / THUMBNAIL, row.get("frames") or 0)
         except (OSError, subprocess.SubprocessError) as exc:      # (the row says the rest)
             print(f"springscene: no thumbnail: {exc}", file=sys.stderr)
     if job["tests"] is not None:
@@ -241,16 +258,21 @@ def _ended(exc: RunEnded, program: Path) -> dict:
             if stopped else _local(line.split(": ", 2)[-1], program)}
 
 
-def _thumbnail(video: Path, out: Path) -> None:
-    """The video's last frame, :data:`THUMBNAIL_WIDTH` px wide (less if it is smaller):
-    decoded from half a second before the end (a third of the time of the whole video),
-    or from the start where a format cannot seek so."""
+def _thumbnail(video: Path, out: Path, frames: int) -> None:
+    """The video's last frame (its ``frames``-th), :data:`THUMBNAIL_WIDTH` px wide (less if
+    it is smaller): that frame alone scaled and written, the others only decoded; where
+    it is not found so (a format that does not decode every frame it counts), the last
+    frame decoded from half a second before the end, or from the start where a format
+    cannot seek so."""
     scale = f"scale='min({THUMBNAIL_WIDTH},iw)':-2"
+    last = [["-threads", "1", "-i", str(video), "-vf", f"select='eq(n,{frames - 1})',{scale}",
+             "-fps_mode", "passthrough", "-frames:v", "1"]] if frames > 0 else []
     with atomic_path(out) as tmp:
-        for seek in (["-sseof", "-0.5"], []):
+        for how in (*last, ["-sseof", "-0.5", "-i", str(video), "-vf", scale],
+                     ["-i", str(video), "-vf", scale]):
             subprocess.run([ffmpeg_exe(), "-hide_banner", "-nostdin", "-loglevel", "error",
-                            *seek, "-i", str(video), "-vf", scale, "-update", "1", "-y",
-                            str(tmp)], check=False, stdin=subprocess.DEVNULL, timeout=120)
+                            *how, "-update", "1", "-y", str(tmp)], check=False,
+                           stdin=subprocess.DEVNULL, timeout=120)
             if tmp.exists() and tmp.stat().st_size:
                 return
         raise OutputError("no frame to make the thumbnail of", out)

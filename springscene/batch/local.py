@@ -1,6 +1,7 @@
 """A batch's programs run on this machine, ``jobs`` at a time.
 
-Each program is a process of its own (:func:`.job.start`); a thread here starts one,
+Each program is a process of its own, forked by the batch's warm process (:mod:`.warm`),
+or started fresh (:func:`.job.start`) where that cannot be; a thread here starts one,
 waits for it and hands it on (``done``), then takes the next. The processes do the
 work, so the threads only wait. A stop (Ctrl-C, SIGTERM: raised in the main thread)
 stops the waiting: no program starts after it, each running one is asked to stop (its
@@ -11,11 +12,14 @@ same way and is raised here.
 
 from __future__ import annotations
 
+import os
 import subprocess
+import sys
 import threading
 from typing import Callable, Iterable
 
 from . import job
+from .warm import Warm
 
 POLL = 0.1        # s: how often the main thread looks up from waiting (a stop comes then)
 
@@ -23,8 +27,8 @@ POLL = 0.1        # s: how often the main thread looks up from waiting (a stop c
 class _Pool:
     """The programs still to run, the processes running, and whether to stop."""
 
-    def __init__(self, items: Iterable, env: dict | None) -> None:
-        self.items, self.env = iter(items), env
+    def __init__(self, items: Iterable, start: Callable) -> None:
+        self.items, self.start = iter(items), start
         self.lock = threading.Lock()
         self.running: set[subprocess.Popen] = set()
         self.stopped = threading.Event()
@@ -58,7 +62,7 @@ class _Pool:
                 if self.stopped.is_set():
                     item.discard()
                     return
-                process = job.start(item.request, self.env)
+                process = self.start(item.request)
                 self.running.add(process)
             process.wait()
             with self.lock:
@@ -73,13 +77,30 @@ class _Pool:
                 self.stop_all()
 
 
-def run_local(items: list, jobs: int, done: Callable, env: dict | None = None) -> None:
-    """Run each item's job (``item.request``), ``jobs`` at a time; ``done(item, status)``
-    once each has ended, in the thread that waited for it; ``item.discard()`` for one
-    stopped part way."""
-    pool = _Pool(items, env)
+def run_local(items: list, jobs: int, done: Callable, env: dict | None = None,
+              warm: bool = True) -> None:
+    """Run each item's job (``item.request``), ``jobs`` at a time, in a warm process's
+    forks (unless ``warm`` is False) with the environment ``env``; ``done(item,
+    status)`` once each has ended, in the thread that waited for it; ``item.discard()``
+    for one stopped part way."""
     if not items:
         return
+    server = None
+    try:
+        if warm and hasattr(os, "fork"):
+            server = Warm(env)
+            if server.failure() is not None:
+                print(f"springscene: batch: no warm process ({server.failure()}); "
+                      "each program starts fresh", file=sys.stderr)
+        _run(items, jobs, done, lambda request: (server and server.start(request))
+             or job.start(request, env))
+    finally:
+        if server is not None:
+            server.close()
+
+
+def _run(items: list, jobs: int, done: Callable, start: Callable) -> None:
+    pool = _Pool(items, start)
     pool.workers = max(1, min(jobs, len(items)))
     for n in range(pool.workers):
         threading.Thread(target=pool.work, args=(done,), daemon=True,

@@ -1,9 +1,10 @@
 """The child process of a supervised run (:mod:`.supervise`): the user's program runs here.
 
-Started by the parent as a fresh interpreter (``python -c`` importing this module, so no
-VTK or EGL state is ever forked) with two arguments: the file descriptor of a pipe to the
-parent and the request as JSON. It runs :func:`.runner.run_program` into the parent's
-private folder and tells the parent, one JSON object a line: ``dialect`` (before the
+Started by the parent as a fresh interpreter (``python -c`` importing this module), or
+in a batch forked from a warm process that never drew (:mod:`.forked`), so that no VTK or
+EGL state is ever forked, with three arguments: the file descriptor of a pipe to the
+parent, the parent's pid and the request as JSON. It runs :func:`.runner.run_program`
+into the parent's private folder and tells the parent, one JSON object a line: ``dialect`` (before the
 program runs), ``progress`` (every :data:`PROGRESS_EVERY` s: the program clock, frames,
 ``rate``/``sleep`` calls and the program's line now) and one ending (``done`` with the
 result, or ``program``, ``exit``, ``user``, ``oserror``, ``interrupted``, ``internal``; a

@@ -1,10 +1,10 @@
 """A supervised run: the user's program runs in a child process; this process owns the output.
 
-The child (:mod:`.child`, a fresh interpreter: nothing is forked after VTK or EGL is
-loaded) writes the video, the page, the graphs and ``scene.capture`` pictures into a
-private hidden folder beside ``out``; only when it reports them finished are they moved
-into place here, one ``os.replace`` each (the video last). Whatever the child does,
-the folder is removed and the run ends in one of these ways (:class:`RunEnded` carries
+The child (:mod:`.child`: a fresh interpreter, or in a batch a fork of a warm process that
+never drew, :mod:`.forked`; nothing is forked after a GL context exists) writes the
+video, the page, the graphs and ``scene.capture`` pictures into a private hidden folder
+beside ``out``; only when it reports them finished are they moved into place here, one
+``os.replace`` each (the video last). Whatever the child does, the folder is removed and the run ends in one of these ways (:class:`RunEnded` carries
 the status and the one line):
 
 ============================================  ====================================
@@ -56,6 +56,7 @@ from typing import Callable
 
 from ...errors import OutputError, ProgramError, UserError
 from ...outputs import hidden_name, remove_if_abandoned
+from . import forked
 from .options import RunOptions, check_request
 from .runner import ProgramRaised, ProgramResult
 from .report import (SandboxMemory, Watch, ended_line, memory_limit, parse_size, peak_of,
@@ -181,17 +182,21 @@ def _start(request: dict, jail: list[str] | None = None) -> subprocess.Popen:
     """The child: a fresh interpreter in its own process group (a terminal's Ctrl-C reaches
     this process, which ends the child), reporting on a pipe; started by ``jail`` (a
     sandbox's command line), if given, which knows no parent (``0``: see :mod:`.lineage`)
-    and reads nothing from this process's terminal."""
+    and reads nothing from this process's terminal. In a warm process (a batch's job) an
+    unsandboxed child is forked from it (:mod:`.forked`)."""
     read, write = os.pipe()
+    argv = [str(write), str(0 if jail else os.getpid()), json.dumps(request)]
     # not the working folder on the path (the program's own folder goes there), and this
     # springscene found last where no installation provides it
     code = (f"import sys; sys.path.pop(0); sys.path.append({_ROOT!r}); "
             "from springscene.vpython.run.child import main; sys.exit(main())")
     try:
-        child = subprocess.Popen([*(jail or []), sys.executable, "-c", code, str(write),
-                                  str(0 if jail else os.getpid()), json.dumps(request)],
-                                 pass_fds=(write,), **_OWN_GROUP,
-                                 stdin=subprocess.DEVNULL if jail else None)
+        if jail is None and forked.ready():
+            child = types.SimpleNamespace(pid=forked.start(write, argv), returncode=None)
+        else:
+            child = subprocess.Popen([*(jail or []), sys.executable, "-c", code, *argv],
+                                     pass_fds=(write,), **_OWN_GROUP,
+                                     stdin=subprocess.DEVNULL if jail else None)
     except BaseException:
         os.close(read)
         raise
