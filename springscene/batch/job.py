@@ -45,6 +45,7 @@ from .plan import RESULT
 LOG = "log.txt"
 THUMBNAIL = "thumbnail.png"
 THUMBNAIL_WIDTH = 320               # px: the index's cards
+WHOLE = 250     # frames: x264's key frame interval; a seek in a shorter video decodes it all
 _ROOT = str(Path(__file__).resolve().parents[2])      # where springscene is
 # how a job's interpreter starts: not the working folder on the path (the program's folder
 # is), and this springscene found last where no installation provides it
@@ -110,11 +111,16 @@ def die_with_parent() -> None:
 
 
 def stop(process: subprocess.Popen) -> None:
-    """Ask a job's process to stop (it ends its program's process and removes its folder)."""
-    try:
-        os.killpg(process.pid, signal.SIGTERM)
-    except (ProcessLookupError, PermissionError):
-        pass
+    """Ask a job's process to stop (it ends its program's process and removes its folder);
+    the process alone if it has no session of its own yet (just forked)."""
+    for kill in (os.killpg, os.kill):
+        try:
+            kill(process.pid, signal.SIGTERM)
+            return
+        except ProcessLookupError:
+            continue
+        except PermissionError:
+            return
 
 
 def main() -> int:
@@ -260,13 +266,13 @@ def _ended(exc: RunEnded, program: Path) -> dict:
 
 def _thumbnail(video: Path, out: Path, frames: int) -> None:
     """The video's last frame (its ``frames``-th), :data:`THUMBNAIL_WIDTH` px wide (less if
-    it is smaller): that frame alone scaled and written, the others only decoded; where
-    it is not found so (a format that does not decode every frame it counts), the last
-    frame decoded from half a second before the end, or from the start where a format
-    cannot seek so."""
+    it is smaller). A video of up to :data:`WHOLE` frames is decoded whole and that frame
+    alone scaled and written; a longer one, or where the frame is not found so (a format
+    that does not decode every frame it counts), from half a second before its end (from
+    the last key frame before), or from the start where a format cannot seek so."""
     scale = f"scale='min({THUMBNAIL_WIDTH},iw)':-2"
     last = [["-threads", "1", "-i", str(video), "-vf", f"select='eq(n,{frames - 1})',{scale}",
-             "-fps_mode", "passthrough", "-frames:v", "1"]] if frames > 0 else []
+             "-fps_mode", "passthrough", "-frames:v", "1"]] if 0 < frames <= WHOLE else []
     with atomic_path(out) as tmp:
         for how in (*last, ["-sseof", "-0.5", "-i", str(video), "-vf", scale],
                      ["-i", str(video), "-vf", scale]):

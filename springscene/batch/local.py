@@ -58,12 +58,11 @@ class _Pool:
 
     def _work(self, done: Callable) -> None:
         while (item := self.next()) is not None:
+            process = self.start(item.request)
             with self.lock:
-                if self.stopped.is_set():
-                    item.discard()
-                    return
-                process = self.start(item.request)
                 self.running.add(process)
+                if self.stopped.is_set():       # (a stop while it started)
+                    job.stop(process)
             process.wait()
             with self.lock:
                 self.running.discard(process)

@@ -1,17 +1,16 @@
 """The batch's warm process: each program's job process forked from it, not started fresh.
 
-A fresh job process spends about half a second of processor time starting, and its
-program's child (:mod:`springscene.vpython.run.child`) about one and a half more importing
-VTK, pyvista and matplotlib, on every program; on two cores running two programs at once
-that is a fifth of the batch. Instead the batch starts one warm process (:func:`serve`,
-a fresh interpreter with the job's environment) which imports all of it once, loads
-matplotlib's fonts, and then forks a job process for each program it is sent. That job
-process is what :func:`.job.start` would have started: its own session, ``log.txt`` as
-its output, the program's folder as its working folder, ``SIGTERM`` when the warm process
-dies (which dies with the batch); it runs :func:`.job.run`, and forks its program's child
-from itself when the program runs unsandboxed (:mod:`springscene.vpython.run.forked`
-says what makes that child a fresh one). A sandboxed program's child is a fresh
-interpreter inside bubblewrap, as always.
+Starting a job process, and its program's child importing VTK, pyvista and matplotlib,
+would cost every program the same processor time again. Instead the batch starts one
+warm process (:func:`serve`, a fresh interpreter with the jobs' environment) which does
+all of that once, loads matplotlib's fonts, and then forks a job process for each
+program it is sent. That job process is what :func:`.job.start` would have started: its
+own session, ``log.txt`` as its output, the program's folder as its working folder, the
+jobs' environment as the batch gave it, ``SIGTERM`` when the warm process dies (which
+dies with the batch); it runs :func:`.job.run`, and forks its program's child from itself
+when the program runs unsandboxed (:mod:`springscene.vpython.run.forked` says what makes
+that child a fresh one). A sandboxed program's child is a fresh interpreter inside
+bubblewrap, as always.
 
 The warm process never draws, so no GL state is ever forked, and it keeps one thread:
 OpenBLAS, which starts its threads as it loads, is asked for one (``OPENBLAS_NUM_THREADS``,
@@ -20,10 +19,10 @@ second thread anyway, it says so and ends, and the batch starts every job fresh
 (:meth:`Warm.start` is None), as it does if the warm process cannot start or dies.
 
 Between the batch and the warm process: one JSON request a line on its stdin (a job's
-request, :func:`.job.request`), one JSON line a reply on its stdout, ``{"ready": true}``
-once it is warm, ``{"pid": N}`` (or ``{"error": ...}``) per request in their order, and
-``{"ended": N, "status": S}`` when job process N has ended (S as ``Popen.returncode``).
-At the end of its stdin it waits for its job processes and ends.
+request, :func:`.job.request`), one JSON line a reply on its stdout: ``{"ready": true}``
+once it is warm; ``{"job": K, "pid": N}`` (or ``{"error": ...}``) for the K-th request,
+in their order; ``{"job": K, "ended": S}`` when that job's process has ended (S as
+``Popen.returncode``). At the end of its stdin it waits for its job processes and ends.
 """
 
 from __future__ import annotations
@@ -41,22 +40,31 @@ import tempfile
 import threading
 import time
 import traceback
+from pathlib import Path
 
+from ..view.plotstyle import agg_figure
+from ..vpython.run import child  # noqa: F401  (what a program's child imports of springscene)
 from ..vpython.run import forked
+from ..vpython.run.sandbox import unavailable
 from . import job
 
-SERVE = f"{job.START}; from springscene.batch.warm import serve; serve()"
+# (the environment kept as it was before any import, to be the job processes')
+SERVE = (f"{job.START}; import os; environment = dict(os.environ); "
+         "from springscene.batch.warm import serve; serve(environment)")
 # what the warm process sets for itself: one BLAS thread (see above)
 _OWN = {"OPENBLAS_NUM_THREADS": "1"}
 WAIT_GONE = 0.05          # s between looks at a job process whose warm process died
 WARM_UP = 300.0           # s the warm process may take to import (a loaded machine)
 REPLY = 60.0              # s it may take to fork a job process
+CLOSE = 30.0              # s its job processes may take to end once it is closed or dead
 
 
-def serve() -> None:
+def serve(environment: dict) -> None:
     """The warm process (started by :class:`Warm`, with :data:`_OWN` in its environment
-    and, as its argument, those variables as the batch would have given them)."""
-    before = json.loads(sys.argv[1])
+    ``environment`` and, as its argument, those variables as the batch gave them)."""
+    given = json.loads(sys.argv[1])
+    environment = {name: value for name, value in {**environment, **given}.items()
+                   if value is not None}
     _warm_up()
     if forked.threads() != 1:
         print(f"springscene: the warm process has {forked.threads()} threads; "
@@ -64,26 +72,22 @@ def serve() -> None:
         sys.exit(1)
     forked.make_warm()
     gc.freeze()                 # (what is imported stays shared with the forks)
-    _Server(before).loop()
+    _Server(environment).loop()
 
 
 def _warm_up() -> None:
     """What every job and run imports (the program's child imports VTK, pyvista and
     matplotlib as it first draws or graphs), matplotlib's fonts, loaded as it first draws
     text, and whether a sandbox can be made here."""
-    import matplotlib.backends.backend_agg  # noqa: F401, PLC0415
-    import matplotlib.transforms  # noqa: F401, PLC0415
-    import PIL.Image  # noqa: F401, PLC0415
-    import pyvista.core  # noqa: F401, PLC0415
-    import vtkmodules.util.numpy_support  # noqa: F401, PLC0415
-    import vtkmodules.vtkFiltersGeometry  # noqa: F401, PLC0415
-    import vtkmodules.vtkRenderingAnnotation  # noqa: F401, PLC0415
-    import vtkmodules.vtkRenderingFreeType  # noqa: F401, PLC0415
-    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401, PLC0415
-
-    from ..view.plotstyle import agg_figure  # noqa: PLC0415
-    from ..vpython.run import child  # noqa: F401, PLC0415
-    from ..vpython.run.sandbox import unavailable  # noqa: PLC0415
+    import matplotlib.backends.backend_agg  # noqa: F401, PLC0415  heavy: warming up
+    import matplotlib.transforms  # noqa: F401, PLC0415  heavy: warming up
+    import PIL.Image  # noqa: F401, PLC0415  heavy: warming up
+    import pyvista.core  # noqa: F401, PLC0415  heavy: warming up
+    import vtkmodules.util.numpy_support  # noqa: F401, PLC0415  heavy: warming up
+    import vtkmodules.vtkFiltersGeometry  # noqa: F401, PLC0415  heavy: warming up
+    import vtkmodules.vtkRenderingAnnotation  # noqa: F401, PLC0415  heavy: warming up
+    import vtkmodules.vtkRenderingFreeType  # noqa: F401, PLC0415  heavy: warming up
+    import vtkmodules.vtkRenderingOpenGL2  # noqa: F401, PLC0415  heavy: warming up
 
     unavailable()               # (the sandbox's trial run, its answer kept by the forks)
 
@@ -99,15 +103,14 @@ class _Server:
     """The warm process's loop: requests in, job processes forked, their ends reported."""
 
     def __init__(self, environment: dict) -> None:
-        self.environment = environment         # the variables as the batch gave them
-        self.children: set[int] = set()
-        self.buffer = b""
-        self.wake, wake_write = os.pipe()
+        self.environment = environment         # the jobs' environment, as the batch gave it
+        self.children: dict[int, int] = {}     # pid: the job's number
+        self.count, self.buffer = 0, b""
+        self.wake, self.wake_write = os.pipe()
         os.set_blocking(self.wake, False)
-        os.set_blocking(wake_write, False)
-        self.wake_write = wake_write
+        os.set_blocking(self.wake_write, False)
         signal.signal(signal.SIGCHLD, lambda signum, frame: None)
-        signal.set_wakeup_fd(wake_write, warn_on_full_buffer=False)
+        signal.set_wakeup_fd(self.wake_write, warn_on_full_buffer=False)
 
     def say(self, message: dict) -> None:
         os.write(1, (json.dumps(message) + "\n").encode())
@@ -134,15 +137,16 @@ class _Server:
         return bool(data)
 
     def fork(self, request: dict) -> None:
+        self.count += 1
         try:
             pid = os.fork()
         except OSError as exc:
-            self.say({"error": str(exc)})
+            self.say({"job": self.count, "error": str(exc)})
             return
         if pid == 0:
             self.become_job(request)
-        self.children.add(pid)
-        self.say({"pid": pid})
+        self.children[pid] = self.count
+        self.say({"job": self.count, "pid": pid})
 
     def reap(self) -> None:
         while self.children:
@@ -152,8 +156,9 @@ class _Server:
                 return
             if not pid:
                 return
-            self.children.discard(pid)
-            self.say({"ended": pid, "status": os.waitstatus_to_exitcode(wait)})
+            number = self.children.pop(pid, None)
+            if number is not None:
+                self.say({"job": number, "ended": os.waitstatus_to_exitcode(wait)})
 
     def become_job(self, request: dict) -> None:
         """In the forked process: the job process :func:`.job.start` would start."""
@@ -169,11 +174,8 @@ class _Server:
             if os.getppid() != parent:              # the warm process died just now
                 os._exit(1)
             _streams(job.log_of(request))
-            for name, value in self.environment.items():
-                if value is None:
-                    os.environ.pop(name, None)
-                else:
-                    os.environ[name] = value
+            os.environ.clear()
+            os.environ.update(self.environment)
             os.chdir(job.working_folder(request))
             code = job.run(request)
         except SystemExit as exc:
@@ -203,18 +205,26 @@ class Warm:
         self.asking = threading.Lock()           # one request and its reply at a time
         self.lock = threading.Lock()             # what the reader thread writes
         self.replies: queue.Queue = queue.Queue()
-        self.ended: dict[int, int | None] = {}
+        self.ended: dict[int, int] = {}          # a job's number: its exit status
         self.waiting: dict[int, threading.Event] = {}
-        self.dead = False
+        self.count, self.dead = 0, False
         self.errors = tempfile.TemporaryFile()
         env = dict(os.environ if env is None else env)
-        before = {name: env.get(name) for name in _OWN}
+        given = {name: env.get(name) for name in _OWN}
         self.process = subprocess.Popen(
-            [sys.executable, "-c", SERVE, json.dumps(before)], stdin=subprocess.PIPE,
+            [sys.executable, "-c", SERVE, json.dumps(given)], stdin=subprocess.PIPE,
             stdout=subprocess.PIPE, stderr=self.errors, env={**env, **_OWN},
             start_new_session=True, preexec_fn=job.die_with_parent)
-        threading.Thread(target=self._read, name="springscene-batch-warm", daemon=True).start()
-        self.ready = self._reply(WARM_UP) is not None
+        try:
+            threading.Thread(target=self._read, name="springscene-batch-warm",
+                             daemon=True).start()
+            self.ready = self._reply(WARM_UP) is not None
+        except BaseException:                     # (Ctrl-C while it warms up)
+            self.process.kill()
+            self.close()
+            raise
+        if not self.ready:
+            self.process.kill()
 
     def start(self, request: dict) -> "WarmJob | None":
         """The job's process forked in the warm process; None when it cannot be (the
@@ -227,20 +237,24 @@ class Warm:
                 self.process.stdin.flush()
             except OSError:
                 return None
+            self.count += 1
             reply = self._reply(REPLY)
-        if reply is None or "pid" not in reply:
+        if reply is None or "pid" not in reply or reply.get("job") != self.count:
             return None
-        return WarmJob(self, reply["pid"])
+        return WarmJob(self, self.count, reply["pid"])
 
-    def wait(self, pid: int) -> int:
-        """Job process ``pid``'s exit status, once it has ended."""
+    def wait(self, number: int, pid: int) -> int:
+        """The exit status of job ``number`` (process ``pid``), once it has ended."""
         with self.lock:
-            event = self.waiting.setdefault(pid, threading.Event())
+            event = self.waiting.setdefault(number, threading.Event())
+            if self.dead:
+                event.set()
         event.wait()
-        status = self.ended.get(pid)
+        with self.lock:
+            status = self.ended.pop(number, None)
+            self.waiting.pop(number, None)
         if status is None:                        # the warm process died before it
-            while _alive(pid):
-                time.sleep(WAIT_GONE)
+            _wait_gone(pid)
             return 1
         return status
 
@@ -253,66 +267,70 @@ class Warm:
         return lines[-1] if lines else f"ended with status {self.process.poll()}"
 
     def close(self) -> None:
-        try:
+        with contextlib.suppress(OSError):
             self.process.stdin.close()
-        except OSError:
-            pass
         try:
-            self.process.wait(timeout=30)
+            self.process.wait(timeout=CLOSE)
         except subprocess.TimeoutExpired:
             self.process.kill()
             self.process.wait()
         self.errors.close()
 
     def _reply(self, timeout: float) -> dict | None:
-        """The warm process's next reply; None, and the warm process ended, if it is dead
-        or has said nothing for ``timeout`` s (then it serves no more)."""
+        """The warm process's next reply; None if it is dead or has said nothing for
+        ``timeout`` s (then it serves no more: its running jobs go on)."""
         try:
             reply = self.replies.get(timeout=timeout)
         except queue.Empty:
             reply = None
         if reply is None:
             self.dead = True
-            with contextlib.suppress(OSError):
-                self.process.kill()
         return reply
 
     def _read(self) -> None:
-        for line in self.process.stdout:
-            try:
-                message = json.loads(line)
-            except ValueError:                    # (not its reply: nothing writes there)
-                continue
-            if "ended" in message:
-                with self.lock:
-                    self.ended[message["ended"]] = message["status"]
-                    self.waiting.setdefault(message["ended"], threading.Event()).set()
-            else:
-                self.replies.put(message)
-        with self.lock:
-            self.dead = True
-            for event in self.waiting.values():
-                event.set()
-        self.replies.put(None)
+        try:
+            for line in self.process.stdout:
+                with contextlib.suppress(ValueError):
+                    self._heard(json.loads(line))
+        finally:
+            with self.lock:
+                self.dead = True
+                for event in self.waiting.values():
+                    event.set()
+            self.replies.put(None)
+
+    def _heard(self, message) -> None:
+        if not isinstance(message, dict):         # (not a reply: nothing else writes there)
+            return
+        if "ended" in message:
+            with self.lock:
+                self.ended[message["job"]] = message["ended"]
+                self.waiting.setdefault(message["job"], threading.Event()).set()
+        else:
+            self.replies.put(message)
 
 
 class WarmJob:
     """A job process forked in the warm process, as much of a ``Popen`` as a batch uses."""
 
-    def __init__(self, warm: Warm, pid: int) -> None:
-        self.warm, self.pid, self.returncode = warm, pid, None
+    def __init__(self, warm: Warm, number: int, pid: int) -> None:
+        self.warm, self.number, self.pid, self.returncode = warm, number, pid, None
 
     def wait(self) -> int:
         if self.returncode is None:
-            self.returncode = self.warm.wait(self.pid)
+            self.returncode = self.warm.wait(self.number, self.pid)
         return self.returncode
 
 
-def _alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:
-        return True
-    return True
+def _wait_gone(pid: int) -> None:
+    """Until process ``pid`` (a job whose warm process died, which the kernel has asked
+    to end) has ended, for at most :data:`CLOSE` s."""
+    deadline = time.monotonic() + CLOSE
+    while time.monotonic() < deadline:
+        try:
+            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except (OSError, IndexError):
+            return
+        if state in ("Z", "X"):
+            return
+        time.sleep(WAIT_GONE)

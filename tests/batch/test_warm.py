@@ -48,14 +48,17 @@ def probe(folder: Path) -> dict:
 def runs(tmp_path_factory):
     """The probe run twice forked from one warm process, then once fresh."""
     base = tmp_path_factory.mktemp("warm")
-    server = warm.Warm(None)
+    # the batch's environment, given to both alike (this process's own, as Python knows
+    # it: a library here may have added to the C library's, which only a child inherits)
+    env = {**os.environ, "SPRINGSCENE_PROBE": "given"}
+    server = warm.Warm(env)
     try:
         assert server.failure() is None
         forks = [server.start(request(PROBE, base / name)) for name in ("one", "two")]
         statuses = [fork.wait() for fork in forks]
     finally:
         server.close()
-    statuses.append(job.start(request(PROBE, base / "fresh")).wait())
+    statuses.append(job.start(request(PROBE, base / "fresh"), env).wait())
     return base, statuses
 
 
@@ -76,9 +79,11 @@ def test_the_program_was_forked_from_the_warm_process_or_started_fresh(runs):
 def test_a_forked_program_finds_what_a_fresh_one_finds(runs):
     base, _ = runs
     forked, fresh = probe(base / "one"), probe(base / "fresh")
-    for fact in ("own_group", "handlers", "blocked", "openblas", "argv", "name", "threads"):
+    for fact in ("own_group", "handlers", "blocked", "openblas", "environment", "argv", "name",
+                 "threads"):
         assert forked[fact] == fresh[fact], fact
     assert forked["own_group"] and forked["blocked"] == []
+    assert forked["environment"]["SPRINGSCENE_PROBE"] == "given"
     assert forked["path"] == fresh["path"]
     assert Path(forked["cwd"]).name == "one" and Path(fresh["cwd"]).name == "fresh"
     # its open files are the fresh one's, and /dev/null where the fork let go of its parents'

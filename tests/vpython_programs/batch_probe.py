@@ -30,6 +30,9 @@ facts = {
     "threads": threading.active_count(),
     "numpy": numpy.random.random(), "random": random.random(),
     "started_as": open("/proc/self/cmdline", "rb").read().split(b"\0")[2].decode(),
+    "environment": dict(os.environ),
+    "memory": [line.split()[1] for line in open("/proc/self/status")
+               if line.startswith(("VmRSS:", "RssAnon:", "RssFile:"))],
 }
 print("PROBE " + json.dumps(facts))
 ball = sphere(pos=vector(-1, 0, 0), radius=0.3, color=color.orange)

@@ -4,12 +4,12 @@ Started by the parent as a fresh interpreter (``python -c`` importing this modul
 in a batch forked from a warm process that never drew (:mod:`.forked`), so that no VTK or
 EGL state is ever forked, with three arguments: the file descriptor of a pipe to the
 parent, the parent's pid and the request as JSON. It runs :func:`.runner.run_program`
-into the parent's private folder and tells the parent, one JSON object a line: ``dialect`` (before the
-program runs), ``progress`` (every :data:`PROGRESS_EVERY` s: the program clock, frames,
-``rate``/``sleep`` calls and the program's line now) and one ending (``done`` with the
-result, or ``program``, ``exit``, ``user``, ``oserror``, ``interrupted``, ``internal``; a
-``program`` error after the first frame carries the result too, its files written up to
-the error).
+into the parent's private folder and tells the parent, one JSON object a line:
+``dialect`` (before the program runs), ``progress`` (every :data:`PROGRESS_EVERY` s: the
+program clock, frames, ``rate``/``sleep`` calls and the program's line now) and one
+ending (``done`` with the result, or ``program``, ``exit``, ``user``, ``oserror``,
+``interrupted``, ``internal``; a ``program`` error after the first frame carries the
+result too, its files written up to the error).
 Whatever is not said on the pipe (``os._exit``, a signal, a crash) the parent reads from
 the exit status.
 """

@@ -4,8 +4,9 @@ The child (:mod:`.child`: a fresh interpreter, or in a batch a fork of a warm pr
 never drew, :mod:`.forked`; nothing is forked after a GL context exists) writes the
 video, the page, the graphs and ``scene.capture`` pictures into a private hidden folder
 beside ``out``; only when it reports them finished are they moved into place here, one
-``os.replace`` each (the video last). Whatever the child does, the folder is removed and the run ends in one of these ways (:class:`RunEnded` carries
-the status and the one line):
+``os.replace`` each (the video last). Whatever the child does, the folder is removed and
+the run ends in one of these ways (:class:`RunEnded` carries the status and the one
+line):
 
 ============================================  ====================================
 the program ends (or ``sys.exit(0)``)          the files, exit 0
