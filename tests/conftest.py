@@ -93,6 +93,15 @@ def wiki_cfg():
     return config.load(WIKI)
 
 
+def process_alive(pid: int) -> bool:
+    """Running (a zombie no reaper has collected yet counts as dead)."""
+    try:
+        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
 def run_cli(*args, check=False):
     """Run the installed ``springscene`` command (the console script beside this Python) in
     a fresh process, as a user runs it (each may pick its own backend)."""

@@ -23,7 +23,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from conftest import ROOT, WIKI
+from conftest import ROOT, WIKI, process_alive
 from springscene import video
 from springscene.model.timeline import frame_steps
 from springscene.errors import OutputError
@@ -397,25 +397,16 @@ KILLED_SCRIPT = textwrap.dedent("""
 """)
 
 
-def _alive(pid: int) -> bool:
-    """Running (a zombie no reaper has collected yet counts as dead)."""
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except OSError:
-        return False
-    return state != "Z"
-
-
 def _ffmpeg_outlives_a_killed_springscene(tmp_path, mode: str) -> bool:
     proc = subprocess.Popen([sys.executable, "-c", KILLED_SCRIPT, str(tmp_path / "v.mp4"),
                              mode], cwd=ROOT, stdout=subprocess.PIPE, text=True)
     ffmpeg, holder = map(int, proc.stdout.readline().split())
     try:
-        assert _alive(ffmpeg)
+        assert process_alive(ffmpeg)
         proc.send_signal(signal.SIGKILL)
         proc.wait()
         for _ in range(40):
-            if not _alive(ffmpeg):
+            if not process_alive(ffmpeg):
                 return False
             time.sleep(0.05)
         return True

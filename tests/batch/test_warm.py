@@ -19,7 +19,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, process_alive
 from springscene.batch import job, warm
 from springscene.batch.plan import RESULT
 from springscene.vpython.run.options import RunOptions
@@ -128,7 +128,7 @@ def test_a_warm_process_that_dies_ends_its_jobs_and_serves_no_more(tmp_path):
         program = _descendants(running.pid)
         os.kill(server.process.pid, signal.SIGKILL)
         assert running.wait() == 1
-        assert not any(_alive(pid) for pid in program.values()), log.read_text()
+        assert not any(process_alive(pid) for pid in program.values()), log.read_text()
         assert server.start(request(PROBE, tmp_path / "after")) is None
     finally:
         server.close()
@@ -149,11 +149,3 @@ def _descendants(pid: int) -> dict[str, int]:
                     todo.append(int(entry.name))
                     found["child" if "child" not in found else f"p{entry.name}"] = int(entry.name)
     return found
-
-
-def _alive(pid: int) -> bool:
-    try:
-        state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-    except OSError:
-        return False
-    return state != "Z"
