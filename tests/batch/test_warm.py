@@ -16,11 +16,12 @@ import signal
 import time
 from collections import Counter
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 
 from conftest import ROOT, process_alive
-from springscene.batch import job, warm
+from springscene.batch import job, local, warm
 from springscene.batch.plan import RESULT
 from springscene.vpython.run.options import RunOptions
 
@@ -149,3 +150,24 @@ def _descendants(pid: int) -> dict[str, int]:
                     todo.append(int(entry.name))
                     found["child" if "child" not in found else f"p{entry.name}"] = int(entry.name)
     return found
+
+
+def test_without_a_warm_process_the_batch_starts_its_jobs_fresh(monkeypatch, tmp_path, capsys):
+    monkeypatch.setattr(warm, "SERVE", "import sys; sys.exit('springscene: no warmth here')")
+    items = [SimpleNamespace(request=request(PROBE, tmp_path / name, duration=0.2),
+                             discard=lambda: None) for name in ("one", "two")]
+    ended = {}
+    local.run_local(items, 2, lambda item, status: ended.update({item.request["folder"]:
+                                                                 status}))
+    assert sorted(ended.values()) == [0, 0]
+    for name in ("one", "two"):
+        assert "springscene.batch.job import main" in _parent_command(tmp_path / name)
+        assert "springscene.vpython.run.child import main" in \
+            probe(tmp_path / name)["started_as"]
+    assert "no warm process (springscene: no warmth here); each program starts fresh" \
+        in capsys.readouterr().err
+
+
+def _parent_command(folder: Path) -> str:
+    """How the job process that ran the probe in ``folder`` was started (its log's line)."""
+    return probe(folder)["parent_started_as"]

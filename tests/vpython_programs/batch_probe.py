@@ -30,6 +30,8 @@ facts = {
     "threads": threading.active_count(),
     "numpy": numpy.random.random(), "random": random.random(),
     "started_as": open("/proc/self/cmdline", "rb").read().split(b"\0")[2].decode(),
+    "parent_started_as": open(f"/proc/{os.getppid()}/cmdline", "rb").read().split(b"\0")[2]
+    .decode(),
     "environment": dict(os.environ),
     "memory": [line.split()[1] for line in open("/proc/self/status")
                if line.startswith(("VmRSS:", "RssAnon:", "RssFile:"))],
