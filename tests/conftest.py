@@ -120,6 +120,16 @@ PYTHON_WARNING_FILTERS = [("default", DeprecationWarning, "__main__"),
                           ("ignore", ImportWarning, ""),
                           ("ignore", ResourceWarning, "")]
 STOP_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+def default_stop_signals() -> None:
+    """(A ``preexec_fn``) the stop signals at their defaults and unblocked in the child,
+    whatever the tests inherited: a shell's background job ignores SIGINT, and springscene
+    keeps a signal ignored when it started ignored, so a test that stops a command with
+    SIGINT would wait for it to end by itself."""
+    for signum in STOP_SIGNALS:
+        signal.signal(signum, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, STOP_SIGNALS)
 # the process's off-screen backend (springscene.view.backend.select): chosen once for the
 # process, with backend._selected, so it stays after a command as the choice does
 PROCESS_WIDE_ENV = ("VTK_DEFAULT_OPENGL_WINDOW",)

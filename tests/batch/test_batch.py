@@ -27,7 +27,7 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from conftest import ROOT, run_cli
+from conftest import ROOT, default_stop_signals, run_cli
 from springscene.batch.plan import find_programs
 from springscene.batch.runs import job_environment
 from springscene.errors import UserError
@@ -157,7 +157,8 @@ def test_ctrl_c_keeps_what_finished_and_a_valid_index(tmp_path):
     proc = subprocess.Popen([str(Path(sys.executable).parent / "springscene"), "batch",
                              str(programs), "--out-dir", str(out), "--jobs", "2", *FLAGS[:4],
                              "--timeout", "120", "--no-sandbox"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=default_stop_signals)
     deadline = time.monotonic() + 120
     while not (out / "alice" / "result.json").exists() and time.monotonic() < deadline:
         time.sleep(0.2)
@@ -172,15 +173,18 @@ def test_ctrl_c_keeps_what_finished_and_a_valid_index(tmp_path):
     assert count_frames(out / "alice" / "alice.mp4") == 12
     assert sorted(p.name for p in out.iterdir()) == ["alice", "index.html", "summary.csv",
                                                      "summary.json"]
-    assert not _running(programs / "carol.py")
+    assert not _running(programs / "carol.py", tmp_path)
 
 
-def _running(program: Path) -> list[int]:
-    """The processes whose command line names ``program``."""
+def _running(program: Path, folder: Path) -> list[int]:
+    """The processes whose command line names ``program`` (a job started fresh) or whose
+    working folder is in ``folder`` (a job and its program forked from the warm process,
+    whose command line is the warm process's)."""
     found = []
     for proc in Path("/proc").iterdir():
         try:
-            if str(program).encode() in (proc / "cmdline").read_bytes():
+            if str(program).encode() in (proc / "cmdline").read_bytes() or \
+                    Path(os.readlink(proc / "cwd")).is_relative_to(folder):
                 found.append(int(proc.name))
         except (OSError, ValueError):
             pass

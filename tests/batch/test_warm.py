@@ -171,3 +171,24 @@ def test_without_a_warm_process_the_batch_starts_its_jobs_fresh(monkeypatch, tmp
 def _parent_command(folder: Path) -> str:
     """How the job process that ran the probe in ``folder`` was started (its log's line)."""
     return probe(folder)["parent_started_as"]
+
+
+def test_signals_ignored_where_the_batch_runs_stay_ignored_as_in_a_fresh_program(tmp_path):
+    """A batch started in the background (``&``, ``nohup``) ignores SIGINT or SIGHUP, and
+    so do its fresh children; a forked one must too (and a caught signal is at its
+    default, as after an exec)."""
+    ignored = (signal.SIGINT, signal.SIGHUP)
+    saved = {signum: signal.signal(signum, signal.SIG_IGN) for signum in ignored}
+    try:
+        server = warm.Warm(dict(os.environ))
+        try:
+            assert server.start(request(PROBE, tmp_path / "forked")).wait() == 0
+        finally:
+            server.close()
+        assert job.start(request(PROBE, tmp_path / "fresh"), dict(os.environ)).wait() == 0
+    finally:
+        for signum, handler in saved.items():
+            signal.signal(signum, handler)
+    forked, fresh = probe(tmp_path / "forked"), probe(tmp_path / "fresh")
+    assert forked["handlers"] == fresh["handlers"]
+    assert forked["handlers"]["SIGINT"] == forked["handlers"]["SIGHUP"] == "1"  # SIG_IGN

@@ -17,7 +17,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import WIKI
+from conftest import WIKI, default_stop_signals
 from springscene.app import signals
 
 BIN = Path(sys.executable).parent
@@ -28,15 +28,7 @@ MASK = sum(1 << (s - 1) for s in STOPS)
 installed = pytest.mark.skipif(not COMMAND.exists(), reason="springscene is not installed here")
 
 
-def _default_signals() -> None:
-    """The stop signals at their defaults and unblocked in the child, whatever this test
-    inherited (a shell's background job ignores SIGINT)."""
-    for signum in signals.SIGNALS:
-        signal.signal(signum, signal.SIG_DFL)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, signals.SIGNALS)
-
-
-def _start(*args, command=(str(COMMAND),), preexec_fn=_default_signals) -> subprocess.Popen:
+def _start(*args, command=(str(COMMAND),), preexec_fn=default_stop_signals) -> subprocess.Popen:
     return subprocess.Popen([*command, *map(str, args)], stdout=subprocess.PIPE,
                             stderr=subprocess.PIPE, text=True, preexec_fn=preexec_fn)
 
@@ -184,7 +176,7 @@ def test_the_running_command_is_named_springscene_and_keeps_the_callers_blocked_
     """``pgrep -x springscene`` finds it; a signal the caller blocked stays blocked: a
     SIGHUP sent meanwhile changes nothing, the run ends with its video."""
     def hup_blocked() -> None:
-        _default_signals()
+        default_stop_signals()
         signal.pthread_sigmask(signal.SIG_BLOCK, [signal.SIGHUP])
 
     proc = _start("render", WIKI, "--draft", "--duration", "1", "--out", tmp_path / "x.gif",

@@ -9,7 +9,7 @@ import textwrap
 
 import pytest
 
-from conftest import WIKI, run_cli
+from conftest import WIKI, default_stop_signals, run_cli
 from springscene import config, progress, render
 from springscene.errors import UserError
 from springscene.model import timeline
@@ -114,7 +114,8 @@ def test_a_long_still_on_an_unsized_terminal_shows_its_bar(tmp_path):
     proc = subprocess.Popen([str(command), "still", str(WIKI), "--dt", "1e-6",
                              "--time", "9.9", "--out", str(tmp_path / "s.png")],
                             cwd=Path(__file__).resolve().parents[2], stdin=secondary,
-                            stdout=secondary, stderr=secondary)
+                            stdout=secondary, stderr=secondary,
+                            preexec_fn=default_stop_signals)
     os.close(secondary)
     shown, start = b"", time.monotonic()
     try:

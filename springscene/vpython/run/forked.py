@@ -15,8 +15,9 @@ What promises a forked child the state of a fresh one:
   thread alone, so a lock held by another would stay held), and anywhere but in a warm
   process: the child is then started fresh, as always;
 - in the child (:func:`_as_fresh`): its own process group; the descriptors it did not
-  open pointed at ``/dev/null`` (the report pipe and the standard streams kept); every
-  signal's handler Python's default and none blocked; numpy's global random state seeded
+  open pointed at ``/dev/null`` (the report pipe and the standard streams kept); the
+  signal handlers an exec and Python's start would leave (an ignored signal stays
+  ignored), none blocked; numpy's global random state seeded
   anew (Python's ``random`` is, by Python); the environment is its parent's, as a fresh
   child's (the warm process gives its job processes the batch's).
 
@@ -93,10 +94,13 @@ def _as_fresh(keep: int) -> None:
     """The forked child made what a fresh interpreter is (the module's list)."""
     os.setpgid(0, 0)
     signal.set_wakeup_fd(-1)
+    # as an exec: a signal caught above is at its default, an ignored one stays ignored;
+    # then as Python starts: Ctrl-C raises KeyboardInterrupt, unless it is ignored
     for signum in signal.valid_signals():
-        if callable(signal.getsignal(signum)) and signum != signal.SIGINT:
+        if callable(signal.getsignal(signum)):
             signal.signal(signum, signal.SIG_DFL)
-    signal.signal(signal.SIGINT, signal.default_int_handler)
+    if signal.getsignal(signal.SIGINT) == signal.SIG_DFL:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
     signal.pthread_sigmask(signal.SIG_SETMASK, ())
     _release_descriptors(keep)
     _WARM["on"] = False                      # (the program's own forks are not warm)
