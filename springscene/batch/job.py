@@ -1,15 +1,15 @@
 """One program of a batch: run as ``springscene vpython`` runs it, to its folder and its row.
 
-Each program has a process of its own (:func:`start`), a fresh interpreter whose stdout
-and stderr are the program's ``log.txt`` (what it printed, its traceback, the
-supervisor's diagnoses), so that programs running side by side never mix their output
-and no program's crash, hang or memory blow-up reaches another's files. That process
-(:func:`main`) runs the program supervised
-(:func:`springscene.vpython.run.supervise.run_supervised`, with ``--timeout`` and
-``--max-memory``) into the program's staging folder, makes the thumbnail from the
+Each program has a process of its own, forked from the batch's warm process
+(:mod:`.warm`) or started fresh (:func:`start`), whose stdout and stderr are the
+program's ``log.txt`` (what it printed, its traceback, the supervisor's diagnoses), so
+that programs running side by side never mix their output and no program's crash, hang
+or memory blow-up reaches another's files. That process (:func:`run`) runs the program
+supervised (:func:`springscene.vpython.run.supervise.run_supervised`, with ``--timeout``
+and ``--max-memory``) into the program's staging folder, makes the thumbnail from the
 video's last frame, grades the recording when there are tests, and writes the row,
-``result.json``, last. The same process runs on a Dask worker (:mod:`.cluster`), there
-in a temporary folder.
+``result.json``, last. The same process runs, started fresh, on a Dask worker
+(:mod:`.cluster`), there in a temporary folder.
 
 A row says how the run ended (``status``): ``ran``; ``error`` (the program raised:
 ``detail`` is the error's first line, and the files up to it are there); ``exit``
