@@ -40,11 +40,10 @@ import tempfile
 import threading
 import time
 import traceback
-from pathlib import Path
 
 from ..view.plotstyle import agg_figure
 from ..vpython.run import child  # noqa: F401  (what a program's child imports of springscene)
-from ..vpython.run import forked
+from ..vpython.run import forked, lineage
 from ..vpython.run.sandbox import unavailable
 from . import job
 
@@ -326,11 +325,5 @@ def _wait_gone(pid: int) -> None:
     """Until process ``pid`` (a job whose warm process died, which the kernel has asked
     to end) has ended, for at most :data:`CLOSE` s."""
     deadline = time.monotonic() + CLOSE
-    while time.monotonic() < deadline:
-        try:
-            state = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()[0]
-        except (OSError, IndexError):
-            return
-        if state in ("Z", "X"):
-            return
+    while not lineage.gone(pid, pid) and time.monotonic() < deadline:
         time.sleep(WAIT_GONE)

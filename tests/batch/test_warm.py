@@ -23,6 +23,7 @@ import pytest
 from conftest import ROOT, process_alive
 from springscene.batch import job, local, warm
 from springscene.batch.plan import RESULT
+from springscene.vpython.run import lineage
 from springscene.vpython.run.options import RunOptions
 
 # each test starts the warm process, a fresh interpreter, and job processes through it
@@ -124,32 +125,16 @@ def test_a_warm_process_that_dies_ends_its_jobs_and_serves_no_more(tmp_path):
         running = server.start(request(HANGS, tmp_path / "hangs", duration=30.0))
         log = tmp_path / "hangs" / job.LOG
         deadline = time.monotonic() + 60
-        while "child" not in _descendants(running.pid) and time.monotonic() < deadline:
+        while not lineage.descendants(running.pid) and time.monotonic() < deadline:
             time.sleep(0.1)
-        program = _descendants(running.pid)
+        program = lineage.descendants(running.pid)       # the program's process, ...
+        assert program
         os.kill(server.process.pid, signal.SIGKILL)
         assert running.wait() == 1
-        assert not any(process_alive(pid) for pid in program.values()), log.read_text()
+        assert not any(process_alive(pid) for pid in program), log.read_text()
         assert server.start(request(PROBE, tmp_path / "after")) is None
     finally:
         server.close()
-
-
-def _descendants(pid: int) -> dict[str, int]:
-    """The process tree under ``pid``: {"child": pid of the program's process, ...}."""
-    found, todo = {}, [pid]
-    while todo:
-        parent = todo.pop()
-        for entry in os.scandir("/proc"):
-            if entry.name.isdigit():
-                try:
-                    fields = Path(entry.path, "stat").read_text().rsplit(")", 1)[1].split()
-                except OSError:
-                    continue
-                if int(fields[1]) == parent:
-                    todo.append(int(entry.name))
-                    found["child" if "child" not in found else f"p{entry.name}"] = int(entry.name)
-    return found
 
 
 def test_without_a_warm_process_the_batch_starts_its_jobs_fresh(monkeypatch, tmp_path, capsys):

@@ -90,7 +90,7 @@ def _start_watcher() -> None:
     try:
         while os.getppid() == child:
             time.sleep(WATCH_EVERY)
-            if _gone(_state["parent"], _state["thread"] or _state["parent"]):
+            if gone(_state["parent"], _state["thread"] or _state["parent"]):
                 deadline = time.monotonic() + GRACE
                 while os.getppid() == child and time.monotonic() < deadline:
                     time.sleep(WATCH_EVERY / 4)
@@ -126,11 +126,12 @@ def parent_dead() -> bool:
         return True
     if os.getppid() != parent:
         return True
-    return _gone(parent, thread)
+    return gone(parent, thread)
 
 
-def _gone(parent: int, thread: int) -> bool:
-    """Whether ``parent``'s thread ``thread`` is exiting, a zombie or gone (``/proc``)."""
+def gone(parent: int, thread: int) -> bool:
+    """Whether process ``parent``'s thread ``thread`` (its pid for its main thread) is
+    exiting, a zombie or gone (``/proc``)."""
     if not os.path.isdir("/proc/self/task"):
         return False
     try:
